@@ -1,0 +1,102 @@
+// A derivation: symbols, assumptions and labelled steps, read from a .dc file (docs/format.md).
+#pragma once
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "derivations/core/expr.hpp"
+#include "derivations/core/source.hpp"
+#include "derivations/core/symbols.hpp"
+
+namespace dc {
+
+// One `x = value` substitution or label reference in a rule's argument list.
+struct RuleArg {
+  enum class Kind { Label, Equation, Symbol, Value } kind = Kind::Label;
+  std::string label;         // Label: the referenced step; Symbol: the name
+  Relation equation;         // Equation: inline `x = value`
+  Node value;                // Value: e.g. a limit point or lower bound
+  SourcePos pos;
+  int length = 1;
+};
+
+// The rule line: `by NAME ...` parsed into named argument groups. Which groups exist depends
+// on the rule (see docs/format.md): refs (labels before the first keyword), and the groups
+// introduced by the keywords `for`, `into`, `of`, `with`, `wrt`, `from`, `->`.
+struct RuleSpec {
+  std::string name;          // canonical: given, definition, rewrite, substitute, solve, limit,
+                             // first_order, series, differentiate, integrate, solves_ode
+  std::string written_name;  // as written (simplify, expand, factor, algebra are rewrite)
+  std::vector<RuleArg> refs;     // labels or inline equations before any keyword
+  std::vector<RuleArg> unknowns; // `for x, y`
+  std::vector<RuleArg> into;     // `into C` / `of A`: the main referenced step
+  std::vector<RuleArg> with;     // `with x = value, y(0) = value`
+  std::optional<RuleArg> var;    // `limit x -> p` / `series x -> p` / `wrt t`
+  std::optional<RuleArg> point;  // `-> p`, `from T0`
+  std::vector<RuleArg> smalls;   // `first_order d1, d2 of A`
+  SourcePos pos;
+  std::string text;
+};
+
+struct Erratum {
+  std::string why;
+  Relation corrected;
+  std::string corrected_text;
+  SourcePos pos;
+};
+
+struct Step {
+  std::string label;
+  std::string tag;           // "9.6" (without parentheses), may be empty
+  Relation claim;
+  std::string claim_text;    // as written (whitespace-normalised)
+  SourcePos pos;             // of the label
+  SourcePos claim_pos;       // of the claim's first character
+  RuleSpec rule;
+  std::vector<std::string> notes;
+  std::optional<Erratum> erratum;
+  std::optional<std::string> stable_of;   // `stable LABEL "regime"`
+  std::string stable_regime;
+};
+
+struct Derivation {
+  SourceText source;
+  std::string title;
+  std::string section;
+  SymbolTable symbols;
+  std::vector<Step> steps;
+
+  const Step* find(const std::string& label) const;
+};
+
+// Read and parse a .dc file. Structural errors (syntax, duplicate labels, unknown rule,
+// references to labels not defined earlier, malformed declarations, empty domains) throw
+// InputError with position. Symbol use is resolved here too: undeclared symbols in claims are
+// InputErrors — except inside a step with an `erratum`, where the error is kept for the
+// checker to report (see Step::erratum) and the corrected claim is used.
+Derivation load_derivation(const std::string& path);
+Derivation parse_derivation(SourceText source);
+
+// For an erratum step: the InputError the printed claim raises (nullopt if none).
+std::optional<InputError> erratum_error(const Derivation& d, const Step& s);
+
+// The GiNaC form of a step's claim sides (definition symbols resolved).
+std::vector<GiNaC::ex> claim_sides(const Derivation& d, const Step& s);
+
+// A formula by label for the numeric module: a step whose claim is `y = expr` with `y` a
+// symbol; returns expr (the last side of the chain) and y's name. Throws InputError if the
+// label is unknown or not of that shape.
+struct Formula {
+  std::string label;
+  std::string target;        // y
+  GiNaC::ex expr;
+  std::vector<GiNaC::symbol> params;   // free symbols of expr, in declaration order
+  const Step* step = nullptr;
+};
+Formula formula(const Derivation& d, const std::string& label);
+std::vector<Formula> formulas(const Derivation& d);   // every step of that shape, file order
+
+}  // namespace dc

@@ -1,0 +1,72 @@
+// prove_equal: the one place that decides whether two expressions are equal.
+//
+// Cascade (each stage only runs when the previous could not decide):
+//   1. exact symbolic: normal(a - b) == 0                        -> Proved, method "normal"
+//   2. expand with transcendental rules (log of products/powers on positive symbols,
+//      exp of sums), then normal                                  -> Proved, "expand (transcendental)"
+//   3. side relations: sin^2+cos^2 = 1 etc. via subs_options::algebraic, then normal
+//                                                                 -> Proved, "side relations"
+//   4. numeric probe: exact random rationals drawn from each symbol's declared domain
+//      (negatives included for real symbols; away from 0, +-1 and integers; rejection of
+//      points violating constraints and of points where either side is undefined / not real),
+//      evaluated with CLN at >= 50 digits (raised to 100 when a difference looks small):
+//        all points agree to the tolerance     -> HoldsNumerically (points, digits, false-accept chance)
+//        one point disagrees (confirmed at higher precision) -> Refuted (point, both values)
+//   5. otherwise Undecided with residual and reason (e.g. "no valid sample points: the
+//      constraints exclude every point tried", "resource limit: expansion would exceed 1e6 terms").
+// A false claim is never Proved or HoldsNumerically; a true claim is never Refuted.
+// Both sides may contain abstract functions (v(t)) and their derivatives: the probe treats
+// each distinct application as an independent random value.
+#pragma once
+#include <cstdint>
+
+#include <ginac/ginac.h>
+
+#include "derivations/core/symbols.hpp"
+#include "derivations/core/verdict.hpp"
+
+namespace dc {
+
+struct ProveOptions {
+  bool symbolic = true;         // run stages 1-3
+  bool numeric = true;          // run stage 4
+  int probe_points = 6;         // points that must agree
+  int digits = 50;              // working precision of the probe
+  double rel_tol_exponent = -30;  // agree when |a-b| <= 10^exp * max(|a|,|b|,1e-300)
+  std::uint64_t seed = 20261121;  // fixed: verdicts are deterministic
+  std::size_t max_terms = 1000000;  // resource limit for expand/normal (estimated first)
+};
+
+// The domains and constraints in force (normally the derivation's SymbolTable).
+Verdict prove_equal(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const SymbolTable& ctx,
+                    const ProveOptions& opt = {});
+
+// Is `e` identically zero? (prove_equal(e, 0)).
+Verdict prove_zero(const GiNaC::ex& e, const SymbolTable& ctx, const ProveOptions& opt = {});
+
+// Side conditions an expression needs to be defined (divisors != 0, log/sqrt/acos/asin
+// arguments), each with whether the domains/constraints guarantee it (checked symbolically
+// where the sign is evident, otherwise by sampling: Violated with a point, or Unknown).
+std::vector<SideCondition> side_conditions(const GiNaC::ex& e, const SymbolTable& ctx);
+
+// Do the declared domains and constraints admit at least one point? (An empty set of
+// assumptions would let anything follow.) Returns an empty string when satisfiable (a point
+// was found), otherwise the reason.
+std::string check_satisfiable(const SymbolTable& ctx, std::uint64_t seed = 20261121);
+
+// Guards GiNaC::Digits (a process-wide global) for the lifetime of the guard.
+class DigitsGuard {
+ public:
+  explicit DigitsGuard(long digits);
+  ~DigitsGuard();
+  DigitsGuard(const DigitsGuard&) = delete;
+  DigitsGuard& operator=(const DigitsGuard&) = delete;
+
+ private:
+  long saved_;
+};
+
+// Estimated number of terms of expand(e); used to refuse runaway expansions.
+double estimate_expanded_terms(const GiNaC::ex& e);
+
+}  // namespace dc

@@ -1,0 +1,34 @@
+// Rule checkers: each takes a step and the derivation so far and returns a verdict with
+// evidence. A rule never silently transforms the claim; it derives its own result with GiNaC
+// and asks prove_equal whether the author's claim equals it.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/prove.hpp"
+#include "derivations/core/verdict.hpp"
+
+namespace dc {
+
+struct StepResult {
+  const Step* step = nullptr;
+  Verdict verdict;
+  std::string derived;       // what GiNaC derived, deterministic text ("" when not applicable)
+  std::string dimension;     // "kg·m/s" (common dimension of the sides) or ""
+  std::vector<InputError> errors;   // dimension mismatches, undefined symbols (erratum), ...
+  bool erratum_reported = false;    // the printed claim's error was reported; corrected form checked
+  double seconds = 0;
+};
+
+StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt = {});
+
+struct CheckSummary {
+  std::vector<StepResult> results;
+  int proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
+  int exit_code(bool strict) const;   // 0 / 1 / 2 / 3 as in docs/format.md
+};
+
+CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt = {});
+
+}  // namespace dc

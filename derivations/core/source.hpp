@@ -1,0 +1,50 @@
+// Source positions and input errors.
+//
+// Every user-facing input problem (malformed file, unknown symbol, impossible physics,
+// runaway expression) is an InputError carrying a position; the CLI prints it GCC style
+//   file:line:col: error: message
+//       offending source line
+//       ^~~~
+// and exits with code 2. No GiNaC or C++ internals ever appear in the message.
+#pragma once
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace dc {
+
+// One line/column in one input (1-based; col counts bytes). file may be "<arg>" or "<stdin>".
+struct SourcePos {
+  std::string file;
+  int line = 0;
+  int col = 0;
+};
+
+// The text of an input, kept so errors can quote the offending line.
+struct SourceText {
+  std::string name;   // file name as the user gave it
+  std::string text;   // whole content
+  std::string line(int line_no) const;  // without the newline; empty if out of range
+};
+
+class InputError : public std::runtime_error {
+ public:
+  // length: how many characters to underline (>= 1).
+  InputError(SourcePos pos, std::string message, int length = 1, std::string line_text = {});
+  const SourcePos& pos() const { return pos_; }
+  const std::string& message() const { return message_; }
+  int length() const { return length_; }
+  const std::string& line_text() const { return line_text_; }
+  InputError with_line_text(std::string text) const;
+  // "file:line:col: error: message" plus, when line_text is known, the line and a caret.
+  std::string format() const;
+
+ private:
+  SourcePos pos_;
+  std::string message_;
+  int length_;
+  std::string line_text_;
+};
+
+}  // namespace dc
