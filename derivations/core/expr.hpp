@@ -48,6 +48,7 @@ struct Node {
   SourcePos pos;          // first character of this node
   int length = 1;         // characters spanned (on pos.line), for underlining
   bool parenthesized = false;  // the author wrote ( ... ) around exactly this node
+  SourcePos op_pos;       // binary operators (Add..Pow): position of the operator character
 
   bool is(NodeKind k) const { return kind == k; }
 };
@@ -62,6 +63,10 @@ struct ParseLimits {
   std::size_t max_length = 100000;   // characters in one expression
   int max_depth = 200;               // nesting of parentheses/operators
   int max_int_digits = 400;          // digits in one numeric literal
+  // Depth of the resulting tree, counting left-nested chains (a+b+c+... is a chain of binary
+  // nodes). Consumers recurse over the tree, so this keeps them far from the stack limit.
+  int max_tree_depth = 5000;
+  // max_depth is additionally capped at 1000 internally (the parser itself recurses).
 };
 
 // Parse one expression / relation. `origin` is the position of text[0]; positions in the

@@ -7,6 +7,7 @@
 #pragma once
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,14 @@ class SymbolTable {
   std::vector<SymbolInfo> symbols_;  // declaration order
   std::map<std::string, std::size_t> by_name_;
   std::vector<Constraint> constraints_;
+};
+
+// Thrown by to_ginac when a limit(f, x, p) written in an expression cannot be decided by the
+// limit helper; what() is the helper's reason. Not an InputError: the input is well formed.
+struct UndecidedLimit : std::runtime_error {
+  explicit UndecidedLimit(const std::string& reason, SourcePos where = {})
+      : std::runtime_error(reason), pos(std::move(where)) {}
+  SourcePos pos;  // the limit(...) call
 };
 
 // Convert the author's tree to GiNaC with the symbols of `table`.
