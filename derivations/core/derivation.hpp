@@ -83,6 +83,13 @@ Derivation parse_derivation(SourceText source);
 // For an erratum step: the InputError the printed claim raises (nullopt if none).
 std::optional<InputError> erratum_error(const Derivation& d, const Step& s);
 
+// Definition steps act as abbreviations: every use of a name introduced by `by definition`
+// (NEW or NEW(t)) is replaced by its defining expression (parameters substituted).
+// (additive: engineer "checker")
+Node resolve_definitions(const Derivation& d, const Node& n);
+// to_ginac of resolve_definitions(d, n) with the derivation's symbol table.
+GiNaC::ex resolved_ginac(const Derivation& d, const Node& n);
+
 // The GiNaC form of a step's claim sides (definition symbols resolved).
 std::vector<GiNaC::ex> claim_sides(const Derivation& d, const Step& s);
 

@@ -1,0 +1,1116 @@
+// Reader for the derivation file format (.dc), docs/format.md.
+//
+// The reader is line oriented: comments are blanked (positions survive), a statement is a
+// line at column 1 plus the indented lines that follow it. Every expression is parsed by
+// dc::parse_relation / parse_expression with its exact origin, so errors point at the
+// offending character, GCC style.
+#include "derivations/core/derivation.hpp"
+
+#include <algorithm>
+#include <functional>
+#include <set>
+
+#include "derivations/core/io.hpp"
+#include "derivations/core/prove.hpp"
+#include "derivations/core/units.hpp"
+
+namespace dc {
+
+namespace {
+
+const std::vector<std::string> kRuleNames = {"given",  "definition", "rewrite",     "substitute",
+                                             "solve",  "limit",      "first_order", "series",
+                                             "differentiate", "integrate", "solves_ode"};
+const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
+const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
+const std::vector<std::string> kStatementKeywords = {"title", "section", "symbol", "function",
+                                                     "assume"};
+const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable"};
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9') || c == '_'; }
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+std::string join(const std::vector<std::string>& v, const std::string& sep) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? sep : "") + v[i];
+  return out;
+}
+
+// A piece of source text with the position of every character (continuation lines are
+// joined with '\n' and keep their indentation, so the expression parser's own position
+// arithmetic — a newline resets the column to 1 — stays exact).
+struct Span {
+  std::string text;
+  std::vector<SourcePos> pos;   // one per character of text
+  SourcePos end;                // just after the last character
+
+  SourcePos at(std::size_t i) const { return i < pos.size() ? pos[i] : end; }
+  void append_line(const std::string& file, int line_no, const std::string& line, std::size_t from) {
+    if (!text.empty()) {
+      text += '\n';
+      pos.push_back(SourcePos{file, line_no, 0});
+      from = 0;  // continuation lines keep their indentation
+    }
+    for (std::size_t i = from; i < line.size(); ++i) {
+      text += line[i];
+      pos.push_back(SourcePos{file, line_no, static_cast<int>(i) + 1});
+    }
+    end = SourcePos{file, line_no, static_cast<int>(line.size()) + 1};
+  }
+  Span sub(std::size_t b, std::size_t e) const {
+    Span s;
+    e = std::min(e, text.size());
+    b = std::min(b, e);
+    s.text = text.substr(b, e - b);
+    s.pos.assign(pos.begin() + static_cast<long>(b), pos.begin() + static_cast<long>(e));
+    s.end = at(e);
+    return s;
+  }
+};
+
+// Strip leading/trailing whitespace (including newlines) of a span range.
+void trim_range(const std::string& t, std::size_t& b, std::size_t& e) {
+  while (b < e && (is_space(t[b]) || t[b] == '\n')) ++b;
+  while (e > b && (is_space(t[e - 1]) || t[e - 1] == '\n')) --e;
+}
+
+struct Statement {
+  int first_line = 0;
+  std::vector<std::pair<int, std::string>> lines;   // (line number, comment-blanked text)
+};
+
+class Reader {
+ public:
+  explicit Reader(SourceText src) { d_.source = std::move(src); }
+
+  Derivation run() {
+    split_lines();
+    collect_labels();
+    for (const auto& st : statements_) statement(st);
+    check_assumptions();
+    return std::move(d_);
+  }
+
+ private:
+  Derivation d_;
+  std::vector<std::string> lines_;              // comment-blanked
+  std::vector<Statement> statements_;
+  std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
+  std::map<std::string, std::size_t> defined_;   // labels defined so far -> step index
+  std::optional<SourcePos> first_assume_;
+
+  const std::string& file() const { return d_.source.name; }
+
+  [[noreturn]] void fail(const SourcePos& p, const std::string& msg, int length = 1) {
+    throw InputError(p, msg, length, d_.source.line(p.line));
+  }
+
+  // --- lines and statements ------------------------------------------------------------
+  void split_lines() {
+    const std::string& t = d_.source.text;
+    std::size_t start = 0;
+    int line_no = 0;
+    while (start <= t.size()) {
+      std::size_t nl = t.find('\n', start);
+      std::string line = t.substr(start, nl == std::string::npos ? std::string::npos : nl - start);
+      ++line_no;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      // blank the comment (outside string literals)
+      bool in_str = false;
+      for (std::size_t i = 0; i < line.size(); ++i) {
+        char c = line[i];
+        if (in_str) {
+          if (c == '\\' && i + 1 < line.size()) ++i;
+          else if (c == '"') in_str = false;
+        } else if (c == '"') {
+          in_str = true;
+        } else if (c == '#') {
+          for (std::size_t j = i; j < line.size(); ++j) line[j] = ' ';
+          break;
+        }
+      }
+      lines_.push_back(line);
+      if (nl == std::string::npos) break;
+      start = nl + 1;
+    }
+    Statement* cur = nullptr;
+    for (std::size_t i = 0; i < lines_.size(); ++i) {
+      const std::string& l = lines_[i];
+      if (l.find_first_not_of(" \t\r") == std::string::npos) continue;
+      int ln = static_cast<int>(i) + 1;
+      if (is_space(l[0])) {
+        if (!cur) {
+          std::size_t c = l.find_first_not_of(" \t");
+          fail({file(), ln, static_cast<int>(c) + 1},
+               "unexpected indented line: indentation continues the statement above, and there is none");
+        }
+        cur->lines.push_back({ln, l});
+      } else {
+        statements_.push_back(Statement{ln, {{ln, l}}});
+        cur = &statements_.back();
+      }
+    }
+  }
+
+  // First word of a line (starting at `from`) and its end.
+  static std::string word_at(const std::string& l, std::size_t from, std::size_t* end = nullptr) {
+    std::size_t i = from;
+    while (i < l.size() && is_ident_char(l[i])) ++i;
+    if (end) *end = i;
+    return l.substr(from, i - from);
+  }
+
+  // Step header: [(TAG)] LABEL ':' ; returns false if the line is not of that shape.
+  struct Header {
+    std::string tag, label;
+    SourcePos label_pos;
+    std::size_t claim_from = 0;
+  };
+  bool parse_header(const std::string& l, int ln, Header& h, bool throw_on_error) {
+    std::size_t i = 0;
+    if (l[0] == '(') {
+      std::size_t close = l.find(')');
+      if (close == std::string::npos) {
+        if (throw_on_error) fail({file(), ln, 1}, "expected ')' to close the equation tag '(' (e.g. '(9.6) label: claim')");
+        return false;
+      }
+      h.tag = l.substr(1, close - 1);
+      std::size_t a = 0, b = h.tag.size();
+      trim_range(h.tag, a, b);
+      h.tag = h.tag.substr(a, b - a);
+      if (h.tag.empty()) {
+        if (throw_on_error) fail({file(), ln, 2}, "expected an equation tag inside '( )', e.g. '(9.6)'");
+        return false;
+      }
+      i = close + 1;
+      while (i < l.size() && is_space(l[i])) ++i;
+    }
+    if (i >= l.size() || !is_ident_start(l[i])) {
+      if (throw_on_error) fail({file(), ln, static_cast<int>(i) + 1}, "expected a step label after the equation tag");
+      return false;
+    }
+    std::size_t e;
+    h.label = word_at(l, i, &e);
+    h.label_pos = {file(), ln, static_cast<int>(i) + 1};
+    std::size_t j = e;
+    while (j < l.size() && is_space(l[j])) ++j;
+    if (j >= l.size() || l[j] != ':') {
+      if (throw_on_error)
+        fail({file(), ln, static_cast<int>(j) + 1},
+             "expected ':' after the step label '" + h.label + "' (a step is '[(TAG)] LABEL: CLAIM')");
+      return false;
+    }
+    h.claim_from = j + 1;
+    return true;
+  }
+
+  void collect_labels() {
+    for (const auto& st : statements_) {
+      const std::string& l = st.lines[0].second;
+      std::string w = word_at(l, 0);
+      if (contains(kStatementKeywords, w) && (l.size() == w.size() || !is_ident_char(l[w.size()]))) {
+        std::size_t k = w.size();
+        while (k < l.size() && is_space(l[k])) ++k;
+        if (k >= l.size() || l[k] != ':') continue;  // a keyword statement, not a label
+      }
+      Header h;
+      if (!parse_header(l, st.first_line, h, false)) continue;
+      if (!all_labels_.count(h.label)) all_labels_[h.label] = h.label_pos;
+    }
+  }
+
+  void statement(const Statement& st) {
+    const std::string& l = st.lines[0].second;
+    std::size_t e;
+    std::string w = word_at(l, 0, &e);
+    bool keyword_statement = contains(kStatementKeywords, w);
+    if (keyword_statement) {
+      std::size_t k = e;
+      while (k < l.size() && is_space(l[k])) ++k;
+      if (k < l.size() && l[k] == ':') keyword_statement = false;  // e.g. a label named 'section'
+    }
+    if (keyword_statement) {
+      Span s;
+      for (std::size_t i = 0; i < st.lines.size(); ++i)
+        s.append_line(file(), st.lines[i].first, st.lines[i].second, i == 0 ? e : 0);
+      if (w == "title" || w == "section") {
+        std::size_t p = 0;
+        std::string str = string_literal(s, p, "a quoted " + w + ", e.g. " + w + " \"...\"");
+        expect_end(s, p);
+        (w == "title" ? d_.title : d_.section) = str;
+      } else if (w == "symbol") {
+        symbol_statement(s, false);
+      } else if (w == "function") {
+        symbol_statement(s, true);
+      } else {
+        assume_statement(s, {file(), st.first_line, 1});
+      }
+      return;
+    }
+    Header h;
+    if (!parse_header(l, st.first_line, h, false)) {
+      bool looks_like_step = l[0] == '(' || (is_ident_start(l[0]) && l.find(':') != std::string::npos);
+      if (looks_like_step) parse_header(l, st.first_line, h, true);  // throws the precise error
+      std::string shown = w.empty() ? std::string(1, l[0]) : w;
+      fail({file(), st.first_line, 1},
+           "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
+           "or a step '[(TAG)] LABEL: CLAIM'",
+           static_cast<int>(std::max<std::size_t>(1, shown.size())));
+    }
+    step_statement(st, h);
+  }
+
+  // --- small lexical helpers on spans ----------------------------------------------------
+  static void skip_ws(const Span& s, std::size_t& p) {
+    while (p < s.text.size() && (is_space(s.text[p]) || s.text[p] == '\n')) ++p;
+  }
+
+  std::string string_literal(const Span& s, std::size_t& p, const std::string& expected) {
+    skip_ws(s, p);
+    if (p >= s.text.size() || s.text[p] != '"') fail(s.at(p), "expected " + expected);
+    SourcePos open = s.at(p);
+    std::string out;
+    ++p;
+    while (p < s.text.size() && s.text[p] != '"') {
+      if (s.text[p] == '\n') fail(open, "unterminated string: expected '\"' before the end of the line");
+      if (s.text[p] == '\\' && p + 1 < s.text.size() && (s.text[p + 1] == '"' || s.text[p + 1] == '\\')) ++p;
+      out += s.text[p++];
+    }
+    if (p >= s.text.size()) fail(open, "unterminated string: expected '\"' before the end of the line");
+    ++p;
+    return out;
+  }
+
+  void expect_end(const Span& s, std::size_t p) {
+    skip_ws(s, p);
+    if (p < s.text.size()) fail(s.at(p), "unexpected text '" + excerpt(s, p) + "'; expected the end of the statement");
+  }
+
+  static std::string excerpt(const Span& s, std::size_t p) {
+    std::size_t e = s.text.find('\n', p);
+    std::string t = s.text.substr(p, e == std::string::npos ? std::string::npos : e - p);
+    while (!t.empty() && is_space(t.back())) t.pop_back();
+    if (t.size() > 30) t = t.substr(0, 30) + "...";
+    return t;
+  }
+
+  std::string identifier(const Span& s, std::size_t& p, const std::string& expected) {
+    skip_ws(s, p);
+    if (p >= s.text.size() || !is_ident_start(s.text[p]))
+      fail(s.at(p), "expected " + expected + (p < s.text.size() ? ", found '" + excerpt(s, p) + "'" : ""));
+    std::size_t b = p;
+    while (p < s.text.size() && is_ident_char(s.text[p])) ++p;
+    return s.text.substr(b, p - b);
+  }
+
+  Node expression(const Span& s, std::size_t b, std::size_t e, const std::string& what) {
+    trim_range(s.text, b, e);
+    if (b >= e) fail(s.at(b), "expected " + what);
+    return parse_expression(std::string_view(s.text).substr(b, e - b), s.at(b));
+  }
+  Relation relation(const Span& s, std::size_t b, std::size_t e, const std::string& what) {
+    trim_range(s.text, b, e);
+    if (b >= e) fail(s.at(b), "expected " + what);
+    return parse_relation(std::string_view(s.text).substr(b, e - b), s.at(b));
+  }
+
+  // Convert with the table, for validation (undefined symbols, exponent limits, ...).
+  GiNaC::ex validate(const Node& n) { return to_ginac(n, d_.symbols); }
+
+  // --- symbol / function -------------------------------------------------------------
+  void symbol_statement(const Span& s, bool is_function) {
+    std::size_t p = 0;
+    struct NameAt { std::string name; SourcePos pos; };
+    std::vector<NameAt> names;
+    std::vector<std::string> params;
+    const char* kind = is_function ? "function" : "symbol";
+    if (is_function) {
+      skip_ws(s, p);
+      SourcePos np = s.at(p);
+      names.push_back({identifier(s, p, "a function name, e.g. 'function v(t) : real [m/s]'"), np});
+      skip_ws(s, p);
+      if (p >= s.text.size() || s.text[p] != '(')
+        fail(s.at(p), "expected '(' and the argument of function '" + names[0].name + "', e.g. 'function v(t)'");
+      ++p;
+      for (;;) {
+        skip_ws(s, p);
+        SourcePos ap = s.at(p);
+        std::string a = identifier(s, p, "an argument name (a declared symbol)");
+        const SymbolInfo* info = d_.symbols.find(a);
+        if (!info || info->is_function)
+          fail(ap, "the argument '" + a + "' of function '" + names[0].name +
+                       "' must be a declared symbol (declare it first with 'symbol " + a + " : real [s]')",
+               static_cast<int>(a.size()));
+        params.push_back(a);
+        skip_ws(s, p);
+        if (p < s.text.size() && s.text[p] == ',') { ++p; continue; }
+        if (p < s.text.size() && s.text[p] == ')') { ++p; break; }
+        fail(s.at(p), "expected ',' or ')' in the argument list of '" + names[0].name + "'");
+      }
+    } else {
+      for (;;) {
+        skip_ws(s, p);
+        SourcePos np = s.at(p);
+        names.push_back({identifier(s, p, "a symbol name, e.g. 'symbol m1, m2 : positive [kg]'"), np});
+        skip_ws(s, p);
+        if (p < s.text.size() && s.text[p] == ',') { ++p; continue; }
+        break;
+      }
+    }
+    for (const auto& n : names) {
+      if (is_reserved_name(n.name) || contains(kRuleKeywords, n.name) || n.name == "by")
+        fail(n.pos, "'" + n.name + "' is a reserved name and cannot be declared as a " + kind,
+             static_cast<int>(n.name.size()));
+    }
+    skip_ws(s, p);
+    if (p >= s.text.size() || s.text[p] != ':')
+      fail(s.at(p), std::string("expected ':' and a domain after the ") + kind +
+                        " names, e.g. ': positive [kg]'");
+    ++p;
+    skip_ws(s, p);
+    // domain: a word, or 'in' followed by an interval [a, b] / (a, b) / half-open
+    std::size_t db = p;
+    std::size_t we;
+    std::string dw = word_at(s.text, p, &we);
+    std::size_t de;
+    if (dw == "in") {
+      std::size_t q = we;
+      while (q < s.text.size() && is_space(s.text[q])) ++q;
+      if (q >= s.text.size() || (s.text[q] != '[' && s.text[q] != '('))
+        fail(s.at(q), "expected an interval after 'in', e.g. 'in [0, 1]' or 'in (0, pi)'");
+      std::size_t close = s.text.find_first_of("])", q + 1);
+      if (close == std::string::npos) fail(s.at(q), "expected ']' or ')' to close the interval");
+      de = close + 1;
+    } else if (dw.empty()) {
+      fail(s.at(p), "expected a domain: real, positive, nonnegative, negative, or an interval 'in [a, b]'");
+    } else {
+      de = we;
+    }
+    std::string dtext = s.text.substr(db, de - db);
+    Domain domain = parse_domain(dtext, s.at(db));
+    p = de;
+    skip_ws(s, p);
+    if (p >= s.text.size() || s.text[p] != '[')
+      fail(s.at(p), "expected the dimension in brackets after the domain, e.g. [kg], [m/s], [1]");
+    std::size_t close = s.text.find(']', p);
+    if (close == std::string::npos) fail(s.at(p), "expected ']' to close the dimension");
+    Node unit = expression(s, p + 1, close, "a dimension inside '[ ]', e.g. [kg*m/s^2] or [1]");
+    Dimension dim = parse_dimension(unit);
+    p = close + 1;
+    std::vector<std::string> tex;
+    skip_ws(s, p);
+    if (p < s.text.size()) {
+      std::size_t te;
+      std::string tw = word_at(s.text, p, &te);
+      if (tw != "tex") fail(s.at(p), "unexpected text '" + excerpt(s, p) + "'; expected 'tex \"...\"' or the end of the statement");
+      SourcePos texpos = s.at(p);
+      p = te;
+      for (;;) {
+        tex.push_back(string_literal(s, p, "a quoted TeX name, e.g. tex \"v'_1\""));
+        skip_ws(s, p);
+        if (p < s.text.size() && s.text[p] == ',') { ++p; continue; }
+        break;
+      }
+      expect_end(s, p);
+      if (tex.size() != names.size())
+        fail(texpos, "expected " + std::to_string(names.size()) + " TeX name" + (names.size() == 1 ? "" : "s") +
+                         " (one per declared name), found " + std::to_string(tex.size()), 3);
+    }
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      SymbolInfo info;
+      info.name = names[i].name;
+      info.tex = tex.empty() ? std::string() : tex[i];
+      info.domain = domain;
+      info.dimension = dim;
+      info.has_dimension = true;
+      info.pos = names[i].pos;
+      info.is_function = is_function;
+      info.params = params;
+      d_.symbols.declare(std::move(info));
+    }
+  }
+
+  // --- assume ------------------------------------------------------------------------
+  void assume_statement(const Span& s, const SourcePos& at) {
+    if (!first_assume_) first_assume_ = at;
+    // split at top-level comparison operators
+    struct Op { std::size_t at, len; Constraint::Op op; };
+    std::vector<Op> ops;
+    int depth = 0;
+    for (std::size_t i = 0; i < s.text.size(); ++i) {
+      char c = s.text[i];
+      if (c == '(') ++depth;
+      else if (c == ')') --depth;
+      if (depth != 0) continue;
+      char n = i + 1 < s.text.size() ? s.text[i + 1] : '\0';
+      if (c == '<' && n == '=') ops.push_back({i, 2, Constraint::Op::Le}), ++i;
+      else if (c == '>' && n == '=') ops.push_back({i, 2, Constraint::Op::Ge}), ++i;
+      else if (c == '!' && n == '=') ops.push_back({i, 2, Constraint::Op::Ne}), ++i;
+      else if (c == '<') ops.push_back({i, 1, Constraint::Op::Lt});
+      else if (c == '>') ops.push_back({i, 1, Constraint::Op::Gt});
+      else if (c == '=') fail(s.at(i), "'=' is not an assumption; expected one of <, <=, >, >=, != (e.g. 'assume v1 > v2')");
+    }
+    if (ops.empty()) {
+      std::size_t b = 0;
+      skip_ws(s, b);
+      fail(s.at(b), "expected a relation with <, <=, >, >= or != (e.g. 'assume v1 > v2')");
+    }
+    std::vector<Node> sides;
+    std::size_t from = 0;
+    for (const auto& o : ops) {
+      sides.push_back(expression(s, from, o.at, "an expression before '" + s.text.substr(o.at, o.len) + "'"));
+      from = o.at + o.len;
+    }
+    sides.push_back(expression(s, from, s.text.size(), "an expression after '" +
+                                                            s.text.substr(ops.back().at, ops.back().len) + "'"));
+    std::vector<GiNaC::ex> ex;
+    for (const auto& n : sides) ex.push_back(validate(n));
+    std::size_t b = 0, e = s.text.size();
+    trim_range(s.text, b, e);
+    for (std::size_t i = 0; i < ops.size(); ++i) {
+      Constraint c;
+      c.lhs = ex[i];
+      c.rhs = ex[i + 1];
+      c.op = ops[i].op;
+      c.text = to_text(sides[i]) + " " + s.text.substr(ops[i].at, ops[i].len) + " " + to_text(sides[i + 1]);
+      c.pos = sides[i].pos;
+      d_.symbols.add_constraint(std::move(c));
+    }
+  }
+
+  void check_assumptions() {
+    std::string why = check_satisfiable(d_.symbols);
+    if (why.empty()) return;
+    SourcePos p = first_assume_ ? *first_assume_ : SourcePos{file(), 1, 1};
+    fail(p, "the assumptions cannot all hold (" + why + "); nothing may be derived from a contradiction", 6);
+  }
+
+  // --- steps -----------------------------------------------------------------------------
+  void step_statement(const Statement& st, const Header& h) {
+    if (contains(kRuleKeywords, h.label) || contains(kAttributeKeywords, h.label) || is_reserved_name(h.label))
+      fail(h.label_pos, "'" + h.label + "' is a reserved word and cannot be a step label",
+           static_cast<int>(h.label.size()));
+    if (auto it = defined_.find(h.label); it != defined_.end()) {
+      const Step& prev = d_.steps[it->second];
+      fail(h.label_pos, "duplicate label '" + h.label + "' (first defined at " + std::to_string(prev.pos.line) + ":" +
+                            std::to_string(prev.pos.col) + ")",
+           static_cast<int>(h.label.size()));
+    }
+    // Parts: the claim, then attribute lines (by/note/erratum/stable), each with continuations.
+    struct Part { std::string kw; Span span; SourcePos kw_pos; };
+    std::vector<Part> parts;
+    parts.push_back({"", {}, h.label_pos});
+    parts.back().span.append_line(file(), st.first_line, st.lines[0].second, h.claim_from);
+    for (std::size_t i = 1; i < st.lines.size(); ++i) {
+      const std::string& l = st.lines[i].second;
+      std::size_t b = l.find_first_not_of(" \t");
+      std::size_t we;
+      std::string w = word_at(l, b, &we);
+      if (contains(kAttributeKeywords, w) && (we >= l.size() || !is_ident_char(l[we]))) {
+        Part part{w, {}, {file(), st.lines[i].first, static_cast<int>(b) + 1}};
+        part.span.append_line(file(), st.lines[i].first, l, we);
+        parts.push_back(std::move(part));
+      } else {
+        parts.back().span.append_line(file(), st.lines[i].first, l, 0);
+      }
+    }
+    Step step;
+    step.label = h.label;
+    step.tag = h.tag;
+    step.pos = h.label_pos;
+    const Span& claim = parts[0].span;
+    std::size_t cb = 0, ce = claim.text.size();
+    trim_range(claim.text, cb, ce);
+    if (cb >= ce) fail(claim.at(cb), "expected a claim after '" + h.label + ":' (an equation 'a = b' or an expression)");
+    step.claim_pos = claim.at(cb);
+    step.claim = relation(claim, cb, ce, "a claim");
+    step.claim_text = normalise_ws(claim.text.substr(cb, ce - cb));
+    bool have_rule = false;
+    for (std::size_t i = 1; i < parts.size(); ++i) {
+      const Part& part = parts[i];
+      if (part.kw == "by") {
+        if (have_rule) fail(part.kw_pos, "a step has exactly one 'by' line; found a second one", 2);
+        step.rule = rule_line(part.span, part.kw_pos);
+        have_rule = true;
+      } else if (part.kw == "note") {
+        std::size_t p = 0;
+        step.notes.push_back(string_literal(part.span, p, "a quoted note, e.g. note \"...\""));
+        expect_end(part.span, p);
+      } else if (part.kw == "erratum") {
+        if (step.erratum) fail(part.kw_pos, "a step has at most one 'erratum'", 7);
+        std::size_t p = 0;
+        Erratum er;
+        er.pos = part.kw_pos;
+        er.why = string_literal(part.span, p, "a quoted reason, e.g. erratum \"v_e is never defined\" : corrected claim");
+        skip_ws(part.span, p);
+        if (p >= part.span.text.size() || part.span.text[p] != ':')
+          fail(part.span.at(p), "expected ':' and the corrected claim after the erratum's reason");
+        ++p;
+        std::size_t e = part.span.text.size();
+        trim_range(part.span.text, p, e);
+        er.corrected = relation(part.span, p, e, "the corrected claim after ':'");
+        er.corrected_text = normalise_ws(part.span.text.substr(p, e - p));
+        step.erratum = std::move(er);
+      } else {  // stable
+        std::size_t p = 0;
+        SourcePos lp = part.span.at([&] { std::size_t q = 0; skip_ws(part.span, q); return q; }());
+        std::string label = identifier(part.span, p, "the label of the step this one is a stable form of");
+        check_ref(label, lp);
+        step.stable_of = label;
+        step.stable_regime = string_literal(part.span, p, "a quoted regime, e.g. stable v_naive \"burn fraction < 1e-3\"");
+        expect_end(part.span, p);
+      }
+    }
+    if (!have_rule)
+      fail(h.label_pos, "step '" + h.label + "' has no rule: expected an indented line 'by RULE ...' (rules: " +
+                            join(kRuleNames, ", ") + ")",
+           static_cast<int>(h.label.size()));
+
+    // Symbols: a definition introduces its left-hand side.
+    if (step.rule.name == "definition") introduce_definition(step);
+    // Undefined symbols (and other conversion errors) in the claim; for an erratum step the
+    // printed claim's error is kept for the report, the corrected claim must be valid.
+    if (step.erratum) {
+      for (const auto& side : step.erratum->corrected.sides) validate(side);
+    } else {
+      for (const auto& side : step.claim.sides) validate_side(side);
+    }
+    defined_[step.label] = d_.steps.size();
+    d_.steps.push_back(std::move(step));
+  }
+
+  // integral(...) cannot be converted to GiNaC; validate its parts instead.
+  void validate_side(const Node& n) {
+    if (n.kind == NodeKind::Call && n.text == "integral") {
+      for (const auto& a : n.args) validate_side(a);
+      return;
+    }
+    if (contains_integral(n)) {
+      for (const auto& a : n.args) validate_side(a);
+      return;
+    }
+    validate(n);
+  }
+  static bool contains_integral(const Node& n) {
+    if (n.kind == NodeKind::Call && n.text == "integral") return true;
+    for (const auto& a : n.args)
+      if (contains_integral(a)) return true;
+    return false;
+  }
+
+  static std::string normalise_ws(const std::string& t) {
+    std::string out;
+    bool space = false;
+    for (char c : t) {
+      if (is_space(c) || c == '\n') { space = true; continue; }
+      if (space && !out.empty()) out += ' ';
+      space = false;
+      out += c;
+    }
+    return out;
+  }
+
+  void introduce_definition(Step& step) {
+    const Relation& r = step.claim;
+    if (r.sides.size() < 2)
+      fail(step.claim_pos, "a definition must be 'NEW = expression' (or 'NEW(t) = expression')");
+    const Node& lhs = r.sides[0];
+    std::string name;
+    std::vector<std::string> params;
+    if (lhs.kind == NodeKind::Symbol) {
+      name = lhs.text;
+    } else if (lhs.kind == NodeKind::Call && !is_builtin_function(lhs.text)) {
+      name = lhs.text;
+      for (const auto& a : lhs.args) {
+        if (a.kind != NodeKind::Symbol || !d_.symbols.find(a.text) || d_.symbols.find(a.text)->is_function)
+          fail(a.pos, "the arguments of a defined function must be declared symbols, e.g. 'p(t) = m*v(t)'", a.length);
+        params.push_back(a.text);
+      }
+    } else {
+      fail(lhs.pos, "a definition must start with the new name: 'NEW = expression' (found '" + to_text(lhs) + "')",
+           lhs.length);
+    }
+    if (is_reserved_name(name)) fail(lhs.pos, "'" + name + "' is a reserved name and cannot be defined", lhs.length);
+    const Node& rhs = r.sides.back();
+    std::vector<const Node*> ids;
+    collect_identifiers(rhs, ids);
+    for (const Node* id : ids)
+      if (id->text == name) fail(id->pos, "the definition of '" + name + "' refers to itself", id->length);
+    // Defined earlier by another definition step?
+    for (const auto& s : d_.steps)
+      if (s.rule.name == "definition" && !s.claim.sides.empty() &&
+          (s.claim.sides[0].kind == NodeKind::Symbol || s.claim.sides[0].kind == NodeKind::Call) &&
+          s.claim.sides[0].text == name)
+        fail(lhs.pos, "'" + name + "' is already defined by step '" + s.label + "' at " + std::to_string(s.pos.line) + ":" +
+                          std::to_string(s.pos.col),
+             lhs.length);
+    if (d_.symbols.find(name)) {
+      // Declared with `symbol`: the definition gives its value; the declaration's dimension
+      // is checked like every step's.
+      const SymbolInfo* info = d_.symbols.find(name);
+      if (info->is_function != !params.empty())
+        fail(lhs.pos, "'" + name + "' is declared as a " + (info->is_function ? "function" : "symbol") +
+                          " but defined as a " + (params.empty() ? "symbol" : "function"),
+             lhs.length);
+      return;
+    }
+    // New symbol: dimension of the right-hand side, domain real unless evidently positive.
+    SymbolInfo info;
+    info.name = name;
+    info.pos = lhs.pos;
+    info.defined_by_step = true;
+    info.is_function = !params.empty();
+    info.params = params;
+    if (!params.empty()) {
+      // the parameters must exist; the body is validated below
+    }
+    info.dimension = dimension_of(rhs, d_.symbols);
+    info.has_dimension = true;
+    try {
+      GiNaC::ex v = validate(rhs);
+      if (params.empty() && v.info(GiNaC::info_flags::positive)) info.domain = Domain::positive();
+    } catch (const InputError&) {
+      throw;
+    }
+    d_.symbols.declare(std::move(info));
+  }
+
+  // --- the rule line -------------------------------------------------------------------
+  void check_ref(const std::string& label, const SourcePos& p) {
+    if (defined_.count(label)) return;
+    auto it = all_labels_.find(label);
+    if (it != all_labels_.end())
+      fail(p, "step '" + label + "' is defined later (at " + std::to_string(it->second.line) + ":" +
+                  std::to_string(it->second.col) + "); a step may only use earlier steps",
+           static_cast<int>(label.size()));
+    fail(p, "unknown label '" + label + "'; expected the label of an earlier step", static_cast<int>(label.size()));
+  }
+
+  RuleSpec rule_line(const Span& s, const SourcePos& by_pos) {
+    RuleSpec spec;
+    spec.pos = by_pos;
+    std::size_t p = 0;
+    skip_ws(s, p);
+    SourcePos name_pos = s.at(p);
+    std::string all_rules = join(kRuleNames, ", ") + " (aliases of rewrite: " + join(kRewriteAliases, ", ") + ")";
+    if (p >= s.text.size() || !is_ident_start(s.text[p]))
+      fail(name_pos, "expected a rule name after 'by'; known rules: " + all_rules);
+    std::string name = identifier(s, p, "a rule name");
+    spec.written_name = name;
+    if (contains(kRuleNames, name)) spec.name = name;
+    else if (contains(kRewriteAliases, name)) spec.name = "rewrite";
+    else fail(name_pos, "unknown rule '" + name + "'; known rules: " + all_rules, static_cast<int>(name.size()));
+    {
+      std::size_t b = 0, e = s.text.size();
+      trim_range(s.text, b, e);
+      spec.text = "by " + normalise_ws(s.text.substr(b, e - b));
+    }
+    // Split the arguments at top-level keywords and '->'.
+    struct Group { std::string kw; SourcePos kw_pos; std::size_t b, e; };
+    std::vector<Group> groups{{"", name_pos, p, s.text.size()}};
+    int depth = 0;
+    for (std::size_t i = p; i < s.text.size(); ++i) {
+      char c = s.text[i];
+      if (c == '(') { ++depth; continue; }
+      if (c == ')') { --depth; continue; }
+      if (depth != 0) continue;
+      if (c == '-' && i + 1 < s.text.size() && s.text[i + 1] == '>') {
+        groups.back().e = i;
+        groups.push_back({"->", s.at(i), i + 2, s.text.size()});
+        ++i;
+        continue;
+      }
+      if (is_ident_start(c) && (i == 0 || !is_ident_char(s.text[i - 1]))) {
+        std::size_t we;
+        std::string w = word_at(s.text, i, &we);
+        if (contains(kRuleKeywords, w)) {
+          groups.back().e = i;
+          groups.push_back({w, s.at(i), we, s.text.size()});
+        }
+        i = we - 1;
+      }
+    }
+    std::set<std::string> seen;
+    for (const auto& g : groups) {
+      if (!g.kw.empty() && !seen.insert(g.kw).second)
+        fail(g.kw_pos, "'" + g.kw + "' appears twice in the rule line", static_cast<int>(g.kw.size()));
+    }
+    // Which keywords each rule takes.
+    const std::string& r = spec.name;
+    std::vector<std::string> allowed;
+    if (r == "rewrite") allowed = {"with"};
+    else if (r == "substitute") allowed = {"into", "with"};
+    else if (r == "solve") allowed = {"for"};
+    else if (r == "limit" || r == "series") allowed = {"->", "of", "with"};
+    else if (r == "first_order") allowed = {"of"};
+    else if (r == "differentiate") allowed = {"wrt"};
+    else if (r == "integrate") allowed = {"wrt", "from", "with"};
+    else if (r == "solves_ode") allowed = {"wrt", "with"};
+    for (const auto& g : groups)
+      if (!g.kw.empty() && !contains(allowed, g.kw))
+        fail(g.kw_pos, "unexpected '" + g.kw + "' in 'by " + name + "'" + usage(r), static_cast<int>(g.kw.size()));
+    auto group = [&](const std::string& kw) -> const Group* {
+      for (const auto& g : groups)
+        if (g.kw == kw) return &g;
+      return nullptr;
+    };
+    auto require = [&](const std::string& kw) -> const Group& {
+      const Group* g = group(kw);
+      if (!g) fail(s.end, "expected '" + kw + "' in 'by " + name + "'" + usage(r));
+      return *g;
+    };
+    const Group& pre = groups[0];
+    auto pre_items = items(s, pre);
+    if (r == "given" || r == "definition") {
+      if (!pre_items.empty())
+        fail(s.at(pre_items[0].first), "'by " + name + "' takes no arguments" + usage(r));
+    } else if (r == "rewrite") {
+      for (auto& it : pre_items) spec.refs.push_back(ref_or_equation(s, it.first, it.second));
+    } else if (r == "substitute") {
+      if (pre_items.empty()) fail(s.at(pre.b), "expected the substitutions (labels or 'x = value')" + usage(r));
+      for (auto& it : pre_items) spec.refs.push_back(ref_or_equation(s, it.first, it.second));
+      spec.into = labels(s, require("into"), "the label of the step to substitute into", 1);
+    } else if (r == "solve") {
+      if (pre_items.empty()) fail(s.at(pre.b), "expected the labels of the equations to solve" + usage(r));
+      for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
+      const Group& g = require("for");
+      for (auto& it : items(s, g)) spec.unknowns.push_back(symbol_or_value(s, it.first, it.second));
+      if (spec.unknowns.empty()) fail(s.at(g.b), "expected the unknowns after 'for'" + usage(r));
+    } else if (r == "limit" || r == "series") {
+      if (pre_items.size() != 1) fail(s.at(pre.b), "expected one variable before '->'" + usage(r));
+      spec.var = symbol_arg(s, pre_items[0].first, pre_items[0].second);
+      const Group& g = require("->");
+      auto pit = items(s, g);
+      if (pit.size() != 1) fail(s.at(g.b), "expected one point after '->' (a value, oo or -oo)" + usage(r));
+      spec.point = value_arg(s, pit[0].first, pit[0].second);
+      spec.into = labels(s, require("of"), "the label of the step to take the " + r + " of", 1);
+    } else if (r == "first_order") {
+      if (pre_items.empty()) fail(s.at(pre.b), "expected the small quantities" + usage(r));
+      for (auto& it : pre_items) spec.smalls.push_back(symbol_arg(s, it.first, it.second));
+      spec.into = labels(s, require("of"), "the label of the step to expand", 1);
+    } else if (r == "differentiate" || r == "integrate" || r == "solves_ode") {
+      if (pre_items.empty()) fail(s.at(pre.b), "expected the label of the equation" + usage(r));
+      for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
+      const Group& g = require("wrt");
+      auto wit = items(s, g);
+      if (wit.size() != 1) fail(s.at(g.b), "expected one variable after 'wrt'" + usage(r));
+      spec.var = symbol_arg(s, wit[0].first, wit[0].second);
+      if (r == "integrate") {
+        const Group& f = require("from");
+        auto fit = items(s, f);
+        if (fit.size() != 1) fail(s.at(f.b), "expected one lower limit after 'from'" + usage(r));
+        spec.point = value_arg(s, fit[0].first, fit[0].second);
+      }
+    }
+    if (const Group* g = group("with")) {
+      auto wit = items(s, *g);
+      if (wit.empty()) fail(s.at(g->b), "expected 'x = value' after 'with'");
+      for (auto& it : wit) {
+        RuleArg a = ref_or_equation(s, it.first, it.second);
+        if (a.kind != RuleArg::Kind::Equation)
+          fail(a.pos, "expected 'x = value' after 'with', found '" + a.label + "'", a.length);
+        spec.with.push_back(std::move(a));
+      }
+    }
+    return spec;
+  }
+
+  static std::string usage(const std::string& r) {
+    if (r == "given" || r == "definition") return "";
+    static const std::map<std::string, std::string> u = {
+        {"rewrite", "by rewrite [A, B, ...] [with x = value, ...]"},
+        {"substitute", "by substitute S1, S2, ... into C"},
+        {"solve", "by solve A, B, ... for x, y, ..."},
+        {"limit", "by limit x -> POINT of A [with y = value, ...]"},
+        {"series", "by series x -> POINT of A"},
+        {"first_order", "by first_order d1, d2 of A"},
+        {"differentiate", "by differentiate A wrt t"},
+        {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]"},
+        {"solves_ode", "by solves_ode A wrt t [with y(T0) = value, ...]"}};
+    auto it = u.find(r);
+    return it == u.end() ? "" : "; usage: '" + it->second + "'";
+  }
+
+  // Top-level comma-separated items of a group: (begin, end) offsets, trimmed.
+  std::vector<std::pair<std::size_t, std::size_t>> items(const Span& s, const auto& g) {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    int depth = 0;
+    std::size_t from = g.b;
+    auto push = [&](std::size_t b, std::size_t e) {
+      trim_range(s.text, b, e);
+      if (b < e) out.push_back({b, e});
+      else if (!out.empty() || e < g.e) fail(s.at(b), "expected an argument between the commas");
+    };
+    for (std::size_t i = g.b; i < g.e; ++i) {
+      char c = s.text[i];
+      if (c == '(') ++depth;
+      else if (c == ')') --depth;
+      else if (c == ',' && depth == 0) {
+        push(from, i);
+        from = i + 1;
+      }
+    }
+    std::size_t b = from, e = g.e;
+    trim_range(s.text, b, e);
+    if (b < e) out.push_back({b, e});
+    else if (!out.empty()) fail(s.at(b), "expected an argument after ','");
+    return out;
+  }
+
+  bool plain_identifier(const Span& s, std::size_t b, std::size_t e) const {
+    if (b >= e || !is_ident_start(s.text[b])) return false;
+    for (std::size_t i = b; i < e; ++i)
+      if (!is_ident_char(s.text[i])) return false;
+    return true;
+  }
+
+  RuleArg label_arg(const Span& s, std::size_t b, std::size_t e) {
+    RuleArg a;
+    a.pos = s.at(b);
+    a.length = static_cast<int>(e - b);
+    if (!plain_identifier(s, b, e))
+      fail(a.pos, "expected a step label, found '" + s.text.substr(b, e - b) + "'", a.length);
+    a.kind = RuleArg::Kind::Label;
+    a.label = s.text.substr(b, e - b);
+    check_ref(a.label, a.pos);
+    return a;
+  }
+
+  std::vector<RuleArg> labels(const Span& s, const auto& g, const std::string& what, std::size_t count) {
+    auto it = items(s, g);
+    if (it.size() != count) fail(s.at(g.b), "expected " + what + " after '" + g.kw + "'");
+    std::vector<RuleArg> out;
+    for (auto& i : it) out.push_back(label_arg(s, i.first, i.second));
+    return out;
+  }
+
+  RuleArg ref_or_equation(const Span& s, std::size_t b, std::size_t e) {
+    if (plain_identifier(s, b, e)) return label_arg(s, b, e);
+    RuleArg a;
+    a.pos = s.at(b);
+    a.length = static_cast<int>(e - b);
+    a.label = s.text.substr(b, e - b);
+    Relation rel = relation(s, b, e, "a label or 'x = value'");
+    if (rel.sides.size() != 2)
+      fail(a.pos, "expected a label or an equation 'x = value', found '" + a.label + "'", a.length);
+    for (const auto& side : rel.sides) validate(side);
+    a.kind = RuleArg::Kind::Equation;
+    a.equation = std::move(rel);
+    return a;
+  }
+
+  RuleArg symbol_arg(const Span& s, std::size_t b, std::size_t e) {
+    RuleArg a;
+    a.pos = s.at(b);
+    a.length = static_cast<int>(e - b);
+    a.label = s.text.substr(b, e - b);
+    if (!plain_identifier(s, b, e)) fail(a.pos, "expected a symbol name, found '" + a.label + "'", a.length);
+    const SymbolInfo* info = d_.symbols.find(a.label);
+    if (!info || info->is_function)
+      fail(a.pos, "undefined symbol '" + a.label + "': declare it with 'symbol " + a.label + " ...'", a.length);
+    a.kind = RuleArg::Kind::Symbol;
+    a.value = parse_expression(a.label, a.pos);
+    return a;
+  }
+
+  RuleArg value_arg(const Span& s, std::size_t b, std::size_t e) {
+    RuleArg a;
+    a.pos = s.at(b);
+    a.length = static_cast<int>(e - b);
+    a.label = s.text.substr(b, e - b);
+    a.kind = RuleArg::Kind::Value;
+    a.value = expression(s, b, e, "a value");
+    bool infinite = (a.value.kind == NodeKind::Symbol && a.value.text == "oo") ||
+                    (a.value.kind == NodeKind::Neg && a.value.args[0].kind == NodeKind::Symbol &&
+                     a.value.args[0].text == "oo");
+    if (!infinite) validate(a.value);
+    return a;
+  }
+
+  RuleArg symbol_or_value(const Span& s, std::size_t b, std::size_t e) {
+    if (plain_identifier(s, b, e)) return symbol_arg(s, b, e);
+    RuleArg a = value_arg(s, b, e);
+    return a;
+  }
+};
+
+// Definitions by step: name -> (params, body).
+struct Definition {
+  std::vector<std::string> params;
+  const Node* body;
+};
+
+std::map<std::string, Definition> definitions(const Derivation& d) {
+  std::map<std::string, Definition> defs;
+  for (const auto& s : d.steps) {
+    if (s.rule.name != "definition" || s.claim.sides.size() < 2) continue;
+    const Node& lhs = s.claim.sides[0];
+    Definition def{{}, &s.claim.sides.back()};
+    if (lhs.kind == NodeKind::Call)
+      for (const auto& a : lhs.args) def.params.push_back(a.text);
+    else if (lhs.kind != NodeKind::Symbol)
+      continue;
+    defs[lhs.text] = def;
+  }
+  return defs;
+}
+
+Node substitute_params(const Node& n, const std::map<std::string, const Node*>& args) {
+  if (n.kind == NodeKind::Symbol) {
+    auto it = args.find(n.text);
+    if (it != args.end()) {
+      Node r = *it->second;
+      r.parenthesized = true;
+      return r;
+    }
+    return n;
+  }
+  Node out = n;
+  for (auto& a : out.args) a = substitute_params(a, args);
+  return out;
+}
+
+Node resolve(const Node& n, const std::map<std::string, Definition>& defs, int depth) {
+  if (depth > 64) throw InputError(n.pos, "definitions nested too deeply (more than 64 levels)", n.length);
+  if (n.kind == NodeKind::Symbol) {
+    auto it = defs.find(n.text);
+    if (it != defs.end() && it->second.params.empty()) {
+      Node r = resolve(*it->second.body, defs, depth + 1);
+      r.parenthesized = true;
+      r.pos = n.pos;
+      return r;
+    }
+    return n;
+  }
+  Node out = n;
+  for (auto& a : out.args) a = resolve(a, defs, depth);
+  if (n.kind == NodeKind::Call) {
+    auto it = defs.find(n.text);
+    if (it != defs.end() && !it->second.params.empty() && it->second.params.size() == out.args.size()) {
+      std::map<std::string, const Node*> args;
+      for (std::size_t i = 0; i < out.args.size(); ++i) args[it->second.params[i]] = &out.args[i];
+      Node r = resolve(substitute_params(*it->second.body, args), defs, depth + 1);
+      r.parenthesized = true;
+      r.pos = n.pos;
+      return r;
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+const Step* Derivation::find(const std::string& label) const {
+  for (const auto& s : steps)
+    if (s.label == label) return &s;
+  return nullptr;
+}
+
+Derivation parse_derivation(SourceText source) {
+  std::string name = source.name;
+  SourceText copy = source;
+  try {
+    return Reader(std::move(source)).run();
+  } catch (const InputError& e) {
+    if (!e.line_text().empty() || e.pos().line < 1) throw;
+    throw e.with_line_text(copy.line(e.pos().line));
+  }
+}
+
+Derivation load_derivation(const std::string& path) {
+  SourceText src;
+  src.name = path;
+  src.text = read_file(path);
+  return parse_derivation(std::move(src));
+}
+
+Node resolve_definitions(const Derivation& d, const Node& n) {
+  auto defs = definitions(d);
+  if (defs.empty()) return n;
+  return resolve(n, defs, 0);
+}
+
+GiNaC::ex resolved_ginac(const Derivation& d, const Node& n) {
+  return to_ginac(resolve_definitions(d, n), d.symbols);
+}
+
+std::optional<InputError> erratum_error(const Derivation& d, const Step& s) {
+  if (!s.erratum) return std::nullopt;
+  try {
+    for (const auto& side : s.claim.sides) to_ginac(side, d.symbols);
+  } catch (const InputError& e) {
+    if (e.line_text().empty() && e.pos().line >= 1) return e.with_line_text(d.source.line(e.pos().line));
+    return e;
+  }
+  return std::nullopt;
+}
+
+std::vector<GiNaC::ex> claim_sides(const Derivation& d, const Step& s) {
+  const Relation& r = s.erratum ? s.erratum->corrected : s.claim;
+  std::vector<GiNaC::ex> out;
+  auto defs = definitions(d);
+  for (std::size_t i = 0; i < r.sides.size(); ++i) {
+    // A definition's own left-hand side is the name being defined: keep it as a symbol.
+    if (i == 0 && s.rule.name == "definition") out.push_back(to_ginac(r.sides[0], d.symbols));
+    else out.push_back(to_ginac(defs.empty() ? r.sides[i] : resolve(r.sides[i], defs, 0), d.symbols));
+  }
+  return out;
+}
+
+namespace {
+
+std::optional<Formula> formula_of(const Derivation& d, const Step& s, std::string* why) {
+  const Relation& r = s.erratum ? s.erratum->corrected : s.claim;
+  if (r.sides.size() < 2 || r.sides[0].kind != NodeKind::Symbol) {
+    if (why) *why = "step '" + s.label + "' is not of the form 'y = expression'";
+    return std::nullopt;
+  }
+  const SymbolInfo* info = d.symbols.find(r.sides[0].text);
+  if (!info || info->is_function) {
+    if (why) *why = "step '" + s.label + "' does not define a symbol";
+    return std::nullopt;
+  }
+  Formula f;
+  f.label = s.label;
+  f.target = info->name;
+  f.step = &s;
+  try {
+    f.expr = resolved_ginac(d, r.sides.back());
+  } catch (const InputError& e) {
+    if (why) *why = e.message();
+    return std::nullopt;
+  }
+  for (const auto& sym : d.symbols.all())
+    if (!sym.is_function && GiNaC::is_a<GiNaC::symbol>(sym.sym) && f.expr.has(sym.sym))
+      f.params.push_back(GiNaC::ex_to<GiNaC::symbol>(sym.sym));
+  return f;
+}
+
+}  // namespace
+
+Formula formula(const Derivation& d, const std::string& label) {
+  const Step* s = d.find(label);
+  if (!s) {
+    std::vector<std::string> labels;
+    for (const auto& st : d.steps) labels.push_back(st.label);
+    throw InputError({d.source.name, 0, 0}, "no step labelled '" + label + "' in " + d.source.name);
+  }
+  std::string why;
+  auto f = formula_of(d, *s, &why);
+  if (!f) throw InputError(s->pos, why, static_cast<int>(s->label.size()), d.source.line(s->pos.line));
+  return *f;
+}
+
+std::vector<Formula> formulas(const Derivation& d) {
+  std::vector<Formula> out;
+  for (const auto& s : d.steps)
+    if (auto f = formula_of(d, s, nullptr)) out.push_back(std::move(*f));
+  return out;
+}
+
+}  // namespace dc
