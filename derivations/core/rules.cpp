@@ -1,0 +1,986 @@
+// Rule checkers (docs/format.md, "Rules"). Each rule derives its own result with GiNaC and
+// asks prove_equal / prove_zero whether the author's claim equals it; no rule decides
+// equality with `ex == ex`.
+//
+// The shared tool is "the claim follows from equations": the references give equations
+// E_k = 0; variables that an equation determines linearly are eliminated one equation at a
+// time (Gaussian elimination over rational functions, with a preference for the unknowns the
+// rule names and for symbols of the claim), and what remains of each side of the claim is
+// handed to prove_equal. Eliminating x with E = c*x + r (c != 0 generically) parametrises the
+// solution set of the equations, so a claim that holds on it reduces to an identity.
+#include "derivations/core/rules.hpp"
+
+#include <chrono>
+#include <map>
+#include <set>
+
+#include "derivations/core/functions.hpp"
+#include "derivations/core/limit.hpp"
+#include "derivations/core/printer.hpp"
+#include "derivations/core/units.hpp"
+
+namespace dc {
+
+namespace {
+
+using GiNaC::ex;
+
+// Thrown inside a rule when the step cannot be checked as written (reported as an error).
+struct StepError {
+  InputError error;
+};
+
+InputError positioned(const Derivation& d, const SourcePos& p, const std::string& msg, int len = 1) {
+  return InputError(p, msg, len, d.source.line(p.line));
+}
+InputError with_line(const Derivation& d, const InputError& e) {
+  if (!e.line_text().empty() || e.pos().line < 1) return e;
+  return e.with_line_text(d.source.line(e.pos().line));
+}
+
+int severity(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved: return 0;
+    case VerdictKind::HoldsNumerically: return 1;
+    case VerdictKind::Undecided: return 2;
+    case VerdictKind::Refuted: return 3;
+  }
+  return 2;
+}
+
+Verdict undecided(const std::string& method, const std::string& reason) {
+  Verdict v;
+  v.kind = VerdictKind::Undecided;
+  v.method = method;
+  v.reason = reason;
+  return v;
+}
+
+Verdict proved(const std::string& method, const std::string& detail = {}) {
+  Verdict v;
+  v.kind = VerdictKind::Proved;
+  v.method = method;
+  v.detail = detail;
+  return v;
+}
+
+// The worst verdict decides; proved methods are listed once each, in order.
+struct Combiner {
+  Verdict worst;
+  bool any = false;
+  std::vector<std::string> methods;
+  void add(Verdict v, const std::string& what) {
+    if (std::find(methods.begin(), methods.end(), v.method) == methods.end()) methods.push_back(v.method);
+    if (!what.empty() && v.kind != VerdictKind::Proved) v.detail = what + (v.detail.empty() ? "" : ": " + v.detail);
+    if (!any || severity(v.kind) > severity(worst.kind)) worst = std::move(v);
+    any = true;
+  }
+  Verdict result() const {
+    if (!any) return undecided("none", "nothing to check");
+    Verdict v = worst;
+    if (v.kind == VerdictKind::Proved) {
+      std::string m;
+      for (std::size_t i = 0; i < methods.size(); ++i) m += (i ? ", " : "") + methods[i];
+      v.method = m;
+    }
+    return v;
+  }
+};
+
+std::string prefix_method(const std::string& rule_method, const std::string& prove_method) {
+  return prove_method.empty() ? rule_method : rule_method + " + " + prove_method;
+}
+
+// --- atoms: abstract function applications become symbols while eliminating ----------
+struct Atomizer : GiNaC::map_function {
+  GiNaC::exmap fwd, back;
+  int n = 0;
+  ex operator()(const ex& e) override {
+    if (pool_function_index(e) >= 0) {
+      auto it = fwd.find(e);
+      if (it != fwd.end()) return it->second;
+      GiNaC::realsymbol s("dc_atom" + std::to_string(n++));
+      fwd[e] = s;
+      back[s] = e;
+      return s;
+    }
+    return e.map(*this);
+  }
+  ex restore(const ex& e) const { return back.empty() ? e : e.subs(back, GiNaC::subs_options::no_pattern); }
+};
+
+void collect_symbols(const ex& e, std::vector<ex>& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    for (const auto& o : out)
+      if (o.is_equal(e)) return;
+    out.push_back(e);
+    return;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
+}
+
+bool has_any(const ex& e, const std::vector<ex>& syms) {
+  for (const auto& s : syms)
+    if (e.has(s)) return true;
+  return false;
+}
+
+// An equation E = 0 with an optional hint: the symbol the author wrote alone on its left.
+struct Eq {
+  ex e;
+  ex hint;
+  std::string from;   // label, for messages
+};
+
+class Checker {
+ public:
+  Checker(const Derivation& d, const Step& s, const ProveOptions& opt, StepResult& res)
+      : d_(d), s_(s), opt_(opt), res_(res) {}
+
+  Verdict run(const Relation& claim);
+
+ private:
+  const Derivation& d_;
+  const Step& s_;
+  const ProveOptions& opt_;
+  StepResult& res_;
+  Atomizer atoms_;
+
+  const RuleSpec& rule() const { return s_.rule; }
+  [[noreturn]] void fail(const SourcePos& p, const std::string& msg, int len = 1) const {
+    throw StepError{positioned(d_, p, msg, len)};
+  }
+
+  std::string text(const ex& e) const { return print_text(e, d_.symbols); }
+
+  ex conv(const Node& n) const { return resolved_ginac(d_, n); }
+
+  std::vector<ex> sides(const Relation& r) const {
+    std::vector<ex> out;
+    for (const auto& n : r.sides) out.push_back(conv(n));
+    return out;
+  }
+
+  const Step& ref_step(const RuleArg& a) const {
+    const Step* st = d_.find(a.label);
+    if (!st) fail(a.pos, "unknown label '" + a.label + "'", a.length);
+    return *st;
+  }
+  static const Relation& claim_of(const Step& st) { return st.erratum ? st.erratum->corrected : st.claim; }
+
+  // Equations of a referenced step (adjacent sides), or of an inline equation.
+  std::vector<Eq> equations(const RuleArg& a) const {
+    const Relation* r;
+    std::string from;
+    if (a.kind == RuleArg::Kind::Label) {
+      const Step& st = ref_step(a);
+      r = &claim_of(st);
+      from = st.label;
+    } else if (a.kind == RuleArg::Kind::Equation) {
+      r = &a.equation;
+      from = a.label;
+    } else {
+      fail(a.pos, "expected a label or an equation 'x = value'", a.length);
+    }
+    if (r->sides.size() < 2)
+      fail(a.pos, "'" + from + "' is an expression, not an equation; a rule can only use equations", a.length);
+    std::vector<Eq> out;
+    std::vector<ex> sd;
+    try {
+      sd = sides(*r);
+    } catch (const InputError& e) {
+      fail(a.pos, "'" + from + "' cannot be used here: " + e.message(), a.length);
+    }
+    for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+      Eq q{sd[i] - sd[i + 1], ex(), from};
+      if (i == 0 && r->sides[0].kind == NodeKind::Symbol) q.hint = sd[0];
+      if (i == 0 && r->sides[0].kind == NodeKind::Call && pool_function_index(sd[0]) >= 0) q.hint = sd[0];
+      out.push_back(std::move(q));
+    }
+    return out;
+  }
+
+  std::vector<Eq> all_equations(const std::vector<RuleArg>& args) const {
+    std::vector<Eq> out;
+    for (const auto& a : args) {
+      auto e = equations(a);
+      out.insert(out.end(), e.begin(), e.end());
+    }
+    return out;
+  }
+
+  // Substitutions `x = value` (inline or a label `x = expr`), applied in order.
+  std::vector<std::pair<ex, ex>> substitutions(const std::vector<RuleArg>& args, std::vector<Eq>* rest) const {
+    std::vector<std::pair<ex, ex>> out;
+    for (const auto& a : args) {
+      const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
+      if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
+      ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
+      auto substitutable = [](const ex& e) {
+        return GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0;
+      };
+      if (substitutable(lhs) && !rhs.has(lhs)) out.push_back({lhs, rhs});
+      else if (substitutable(rhs) && !lhs.has(rhs)) out.push_back({rhs, lhs});
+      else if (rest) rest->push_back({lhs - rhs, ex(), a.label});
+      else fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
+    }
+    return out;
+  }
+  static ex apply(ex e, const std::vector<std::pair<ex, ex>>& subs) {
+    for (const auto& [from, to] : subs) e = e.subs(from == to);
+    return e;
+  }
+
+  // --- elimination ------------------------------------------------------------------
+  struct Reduction {
+    std::vector<std::pair<ex, ex>> eliminated;  // atomized (var, value)
+    std::vector<ex> leftover;                   // equations with nothing eliminable (atomized, reduced)
+    bool resource_limit = false;
+  };
+
+  int declaration_index(const ex& s) const {
+    int i = 0;
+    for (const auto& info : d_.symbols.all()) {
+      if (info.sym.is_equal(s)) return i;
+      ++i;
+    }
+    return -1;
+  }
+  bool real_domain(const ex& s) const {
+    for (const auto& info : d_.symbols.all())
+      if (info.sym.is_equal(s)) return info.domain.kind == Domain::Kind::Real;
+    return true;  // atoms (abstract functions) are unrestricted
+  }
+
+  Reduction reduce(std::vector<Eq> eqs, const ex& target, const std::vector<ex>& preferred,
+                   bool only_preferred) {
+    Reduction red;
+    for (auto& q : eqs) {
+      ex e = atoms_(q.e);
+      for (const auto& [v, val] : red.eliminated) e = e.subs(v == val);
+      if (estimate_expanded_terms(e) > static_cast<double>(opt_.max_terms)) {
+        red.resource_limit = true;
+        continue;
+      }
+      ex num;
+      try {
+        num = GiNaC::numer(GiNaC::normal(e)).expand();
+      } catch (const std::exception&) {
+        red.resource_limit = true;
+        continue;
+      }
+      if (num.is_zero()) continue;
+      std::vector<ex> cands;
+      collect_symbols(num, cands);
+      ex hint = atoms_(q.hint);
+      ex t = atoms_(target);
+      int best_score = -1;
+      ex best, best_value;
+      for (const auto& c : cands) {
+        bool pref = false;
+        for (const auto& p : preferred)
+          if (p.is_equal(c)) pref = true;
+        if (only_preferred && !pref) continue;
+        ex coef = num.coeff(c, 1);
+        if (coef.is_zero() || coef.has(c)) continue;
+        ex rest = (num - coef * c).expand();
+        if (rest.has(c)) continue;
+        int score = 0;
+        if (pref) score += 1000;
+        if (t.has(c)) score += 100;
+        if (hint.is_equal(c)) score += 50;
+        if (real_domain(c)) score += 20;
+        if (GiNaC::is_a<GiNaC::numeric>(coef)) score += 10;
+        score = score * 100 + std::max(0, declaration_index(c)) % 100;
+        if (score > best_score) {
+          best_score = score;
+          best = c;
+          best_value = -rest / coef;
+        }
+      }
+      if (best_score < 0) {
+        red.leftover.push_back(num);
+        continue;
+      }
+      for (auto& [v, val] : red.eliminated) val = val.subs(best == best_value);
+      red.eliminated.push_back({best, best_value});
+    }
+    return red;
+  }
+
+  ex reduced(const ex& e, const Reduction& red) {
+    ex r = atoms_(e);
+    for (const auto& [v, val] : red.eliminated) r = r.subs(v == val);
+    return atoms_.restore(r);
+  }
+
+  std::string eliminated_text(const Reduction& red) const {
+    std::string out;
+    for (const auto& [v, val] : red.eliminated) out += (out.empty() ? "" : ", ") + text(atoms_.restore(v));
+    return out;
+  }
+
+  // Does a = b follow from the equations?
+  Verdict follows(const ex& a, const ex& b, const std::vector<Eq>& eqs, const std::vector<ex>& preferred = {}) {
+    if (eqs.empty()) return prove_equal(a, b, d_.symbols, opt_);
+    Reduction red = reduce(eqs, a - b, preferred, false);
+    ex ra = reduced(a, red), rb = reduced(b, red);
+    Verdict v = prove_equal(ra, rb, d_.symbols, opt_);
+    if (red.resource_limit && !v.holds()) {
+      v = undecided(v.method, "resource limit: an equation would expand beyond " + std::to_string(opt_.max_terms) + " terms");
+    }
+    if (!red.eliminated.empty()) {
+      std::string el = "eliminating " + eliminated_text(red) + " with the references";
+      v.detail = v.detail.empty() ? el : v.detail + "; " + el;
+    }
+    return v;
+  }
+
+  // --- the rules ----------------------------------------------------------------------
+  Verdict rewrite(const Relation& claim);
+  Verdict substitute(const Relation& claim);
+  Verdict solve(const Relation& claim);
+  Verdict limit_or_series(const Relation& claim, bool is_limit);
+  Verdict first_order_rule(const Relation& claim);
+  Verdict differentiate(const Relation& claim);
+  Verdict integrate(const Relation& claim);
+  Verdict solves_ode(const Relation& claim);
+
+  Verdict links_follow(const std::vector<ex>& sd, const std::vector<Eq>& eqs, const std::string& rule_method,
+                       const std::vector<ex>& preferred = {}) {
+    Combiner c;
+    for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+      Verdict v = follows(sd[i], sd[i + 1], eqs, preferred);
+      v.method = prefix_method(rule_method, v.method);
+      c.add(v, sd.size() > 2 ? "link " + std::to_string(i + 1) + " (" + text(sd[i]) + " = " + text(sd[i + 1]) + ")" : "");
+    }
+    return c.result();
+  }
+
+  ex symbol_of(const RuleArg& a) const {
+    ex v = conv(a.value);
+    if (!GiNaC::is_a<GiNaC::symbol>(v)) fail(a.pos, "expected a symbol", a.length);
+    return v;
+  }
+};
+
+Verdict Checker::rewrite(const Relation& claim) {
+  std::vector<ex> sd = sides(claim);
+  auto subs = substitutions(rule().with, nullptr);
+  for (auto& e : sd) e = apply(e, subs);
+  if (sd.size() < 2) {
+    // An expression step: nothing to compare; its side conditions are still checked.
+    return proved("expression", "an expression (no equation to check)");
+  }
+  std::vector<Eq> eqs = all_equations(rule().refs);
+  for (auto& q : eqs) q.e = apply(q.e, subs);
+  return links_follow(sd, eqs, rule().refs.empty() ? "identity" : "rewrite");
+}
+
+Verdict Checker::substitute(const Relation& claim) {
+  std::vector<Eq> extra;
+  auto subs = substitutions(rule().refs, &extra);
+  auto w = substitutions(rule().with, nullptr);
+  subs.insert(subs.end(), w.begin(), w.end());
+  const Step& c = ref_step(rule().into[0]);
+  const Relation& cr = claim_of(c);
+  std::vector<ex> cs = sides(cr);
+  for (auto& e : cs) e = apply(e, subs);
+  std::vector<Eq> eqs;
+  for (std::size_t i = 0; i + 1 < cs.size(); ++i) {
+    Eq q{cs[i] - cs[i + 1], ex(), c.label};
+    if (i == 0 && (GiNaC::is_a<GiNaC::symbol>(cs[0]) || pool_function_index(cs[0]) >= 0)) q.hint = cs[0];
+    eqs.push_back(q);
+  }
+  for (auto& q : extra) eqs.push_back(q);
+  if (cs.size() >= 2) res_.derived = text(cs.front()) + " = " + text(cs.back());
+  else if (!cs.empty()) res_.derived = text(cs.front());
+  std::vector<ex> sd = sides(claim);
+  if (cs.size() < 2) {
+    // substituting into an expression: the claim must be that expression
+    if (sd.size() != 1) fail(rule().into[0].pos, "'" + c.label + "' is an expression; the claim must be one too");
+    Verdict v = prove_equal(sd[0], cs[0], d_.symbols, opt_);
+    v.method = prefix_method("substitute", v.method);
+    return v;
+  }
+  if (sd.size() < 2) fail(s_.claim_pos, "expected an equation as the claim of 'by substitute'");
+  return links_follow(sd, eqs, "substitute");
+}
+
+Verdict Checker::solve(const Relation& claim) {
+  std::vector<Eq> eqs = all_equations(rule().refs);
+  std::vector<ex> sd = sides(claim);
+  if (sd.size() < 2) fail(s_.claim_pos, "the claim of 'by solve' must be an equation 'x = expression'");
+  // Unknowns: symbols, or expressions (sin(theta)) replaced by stand-in symbols.
+  std::vector<ex> unknowns;
+  GiNaC::exmap standin, standback;
+  int k = 0;
+  for (const auto& u : rule().unknowns) {
+    ex e = atoms_(conv(u.value));
+    if (!GiNaC::is_a<GiNaC::symbol>(e)) {
+      GiNaC::realsymbol s("dc_unknown" + std::to_string(k++));
+      standin[e] = s;
+      standback[s] = e;
+      e = s;
+    }
+    unknowns.push_back(e);
+  }
+  auto in = [&](const ex& e) { return atoms_(e).subs(standin, GiNaC::subs_options::no_pattern); };
+  auto out = [&](const ex& e) { return atoms_.restore(e.subs(standback, GiNaC::subs_options::no_pattern)); };
+  std::vector<ex> E;
+  for (auto& q : eqs) E.push_back(in(q.e));
+  for (std::size_t i = 0; i < unknowns.size(); ++i) {
+    bool appears = false;
+    for (const auto& e : E) appears = appears || e.has(unknowns[i]);
+    if (!appears)
+      fail(rule().unknowns[i].pos, "the unknown '" + rule().unknowns[i].label + "' does not appear in the equations",
+           rule().unknowns[i].length);
+  }
+  // Linear in the unknowns?
+  bool linear = E.size() >= unknowns.size();
+  std::vector<ex> nums;
+  for (const auto& e : E) {
+    ex num;
+    try {
+      num = GiNaC::numer(GiNaC::normal(e)).expand();
+    } catch (const std::exception&) {
+      linear = false;
+      break;
+    }
+    nums.push_back(num);
+    for (const auto& u : unknowns) {
+      ex c = num.coeff(u, 1);
+      ex rest = (num - c * u).expand();
+      if (rest.has(u) || has_any(c, unknowns)) linear = false;
+    }
+  }
+  if (linear) {
+    GiNaC::lst eqlist, varlist;
+    for (const auto& n : nums) eqlist.append(n == 0);
+    for (const auto& u : unknowns) varlist.append(u);
+    ex sol;
+    bool ok = true;
+    try {
+      sol = GiNaC::lsolve(eqlist, varlist);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    if (ok && GiNaC::is_a<GiNaC::lst>(sol) && sol.nops() == unknowns.size()) {
+      GiNaC::exmap solmap;
+      std::string derived;
+      bool determined = true;
+      for (std::size_t i = 0; i < sol.nops(); ++i) {
+        ex var = sol.op(i).lhs(), val = sol.op(i).rhs();
+        if (has_any(val, unknowns)) determined = false;
+        solmap[var] = val;
+      }
+      if (determined) {
+        for (std::size_t i = 0; i < unknowns.size(); ++i) {
+          ex val = out(solmap[unknowns[i]]);
+          derived += (derived.empty() ? "" : "; ") + text(out(unknowns[i])) + " = " + text(val);
+          for (auto& sc : side_conditions(val, d_.symbols)) res_.verdict.side_conditions.push_back(sc);
+        }
+        res_.derived = derived;
+        Combiner c;
+        for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+          ex a = out(in(sd[i]).subs(solmap)), b = out(in(sd[i + 1]).subs(solmap));
+          Verdict v = prove_equal(a, b, d_.symbols, opt_);
+          v.method = prefix_method("lsolve", v.method);
+          c.add(v, sd.size() > 2 ? "link " + std::to_string(i + 1) : "");
+        }
+        return c.result();
+      }
+    }
+  }
+  // Nonlinear (or not uniquely solvable): substitute the claim back. The claim must be
+  // `u = G` for an unknown u; each equation, with u = G and the other unknowns eliminated,
+  // must reduce to an identity.
+  ex lhs = in(sd[0]);
+  int which = -1;
+  for (std::size_t i = 0; i < unknowns.size(); ++i)
+    if (lhs.is_equal(unknowns[i])) which = static_cast<int>(i);
+  if (which < 0) {
+    Verdict v = links_follow(sd, eqs, "solve (elimination)", [&] {
+      std::vector<ex> p;
+      for (auto& u : unknowns) p.push_back(out(u));
+      return p;
+    }());
+    return v;
+  }
+  Combiner c;
+  std::vector<ex> others;
+  for (std::size_t i = 0; i < unknowns.size(); ++i)
+    if (static_cast<int>(i) != which) others.push_back(unknowns[i]);
+  for (std::size_t k2 = 1; k2 < sd.size(); ++k2) {
+    ex G = in(sd[k2]);
+    if (G.has(unknowns[which])) fail(s_.claim_pos, "the claimed solution for '" + text(out(lhs)) + "' contains it");
+    std::vector<Eq> back;
+    for (const auto& e : E) back.push_back({e.subs(unknowns[which] == G), ex(), ""});
+    Reduction red = reduce(back, ex(0), others, true);
+    int checked = 0;
+    for (const auto& left : red.leftover) {
+      Verdict v = prove_zero(atoms_.restore(out(left)), d_.symbols, opt_);
+      v.method = prefix_method("claim substituted back", v.method);
+      c.add(v, "equation with " + text(out(lhs)) + " = " + text(out(G)));
+      ++checked;
+    }
+    if (red.resource_limit) c.add(undecided("claim substituted back", "resource limit"), "");
+    if (checked == 0 && !red.resource_limit) {
+      // Every equation was used to eliminate another unknown, or reduced to 0: the claim
+      // satisfies all of them identically.
+      if (!red.eliminated.empty())
+        c.add(undecided("claim substituted back", "the equations do not determine " + text(out(lhs)) +
+                                                      " (they are used up by the other unknowns)"),
+              "");
+      else
+        c.add(proved("claim substituted back (normal)"), "");
+    }
+    res_.derived = "nonlinear in the unknowns: the claim " + text(out(lhs)) + " = " + text(out(G)) +
+                   " was substituted into the equations (other roots are not excluded)";
+  }
+  return c.result();
+}
+
+namespace {
+bool is_infinity(const Node& n, int& sign) {
+  if (n.kind == NodeKind::Symbol && n.text == "oo") { sign = 1; return true; }
+  if (n.kind == NodeKind::Neg && n.args[0].kind == NodeKind::Symbol && n.args[0].text == "oo") { sign = -1; return true; }
+  if (n.kind == NodeKind::Sub || n.kind == NodeKind::Add) return false;
+  return false;
+}
+}  // namespace
+
+Verdict Checker::limit_or_series(const Relation& claim, bool is_limit) {
+  const std::string rname = is_limit ? "limit" : "series";
+  const Step& A = ref_step(rule().into[0]);
+  const Relation& ar = claim_of(A);
+  auto subs = substitutions(rule().with, nullptr);
+  std::vector<ex> as = sides(ar);
+  for (auto& e : as) e = apply(e, subs);
+  ex f = as.back();
+  bool has_lhs = as.size() >= 2;
+  ex x = symbol_of(*rule().var);
+  int inf = 0;
+  ex point;
+  if (!is_infinity(rule().point->value, inf)) point = conv(rule().point->value);
+  if (!is_limit && inf != 0) fail(rule().point->pos, "a first-order series needs a finite point", rule().point->length);
+  ex value;
+  std::string how;
+  int value_inf = 0;
+  if (is_limit) {
+    LimitResult L = compute_limit(f, GiNaC::ex_to<GiNaC::symbol>(x), inf ? ex(0) : point, inf, d_.symbols);
+    if (!L.ok) return undecided("limit", L.reason.empty() ? "the limit helper could not decide" : L.reason);
+    value = L.value;
+    value_inf = L.infinite;
+    how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+    res_.derived = value_inf ? (value_inf > 0 ? "oo" : "-oo") : text(value);
+  } else {
+    std::string why;
+    auto s = series_first_order(f, GiNaC::ex_to<GiNaC::symbol>(x), point, &why);
+    if (!s) return undecided("series", why.empty() ? "series expansion failed" : why);
+    value = *s;
+    how = "series (first order)";
+    res_.derived = text(value);
+  }
+  Combiner c;
+  for (std::size_t i = 0; i < claim.sides.size(); ++i) {
+    Node n = resolve_definitions(d_, claim.sides[i]);
+    std::string what = claim.sides.size() > 1 ? "side " + std::to_string(i + 1) : "";
+    if (is_limit && n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3) {
+      // limit(g, x, p) written in the claim: g must be the referenced f, x and p the rule's.
+      ex gx = to_ginac(n.args[1], d_.symbols);
+      int ginf = 0;
+      bool same_point;
+      if (is_infinity(n.args[2], ginf) || inf) same_point = ginf == inf;
+      else same_point = prove_equal(to_ginac(n.args[2], d_.symbols), point, d_.symbols, opt_).holds();
+      if (!gx.is_equal(x) || !same_point)
+        fail(n.pos, "this limit is not the one of the rule ('" + rule().text + "')", n.length);
+      ex g = apply(to_ginac(n.args[0], d_.symbols), subs);
+      Verdict v = prove_equal(g, f, d_.symbols, opt_);
+      v.method = prefix_method("limit argument", v.method);
+      c.add(v, what);
+      continue;
+    }
+    if (i == 0 && has_lhs) {
+      Verdict v = prove_equal(conv(claim.sides[0]), as[0], d_.symbols, opt_);
+      v.method = prefix_method(rname + " (left-hand side)", v.method);
+      c.add(v, what);
+      continue;
+    }
+    int sinf = 0;
+    if (is_infinity(n, sinf) || value_inf) {
+      if (sinf == value_inf) c.add(proved(how), what);
+      else {
+        Verdict v;
+        v.kind = VerdictKind::Refuted;
+        v.method = how;
+        v.detail = "the limit is " + (value_inf ? std::string(value_inf > 0 ? "oo" : "-oo") : text(value)) +
+                   ", the claim says " + to_text(claim.sides[i]);
+        v.lhs_value = to_text(claim.sides[i]);
+        v.rhs_value = value_inf ? (value_inf > 0 ? "oo" : "-oo") : text(value);
+        c.add(v, what);
+      }
+      continue;
+    }
+    Verdict v;
+    try {
+      v = prove_equal(to_ginac(n, d_.symbols), value, d_.symbols, opt_);
+    } catch (const UndecidedLimit& e) {
+      v = undecided("limit", e.what());
+    }
+    v.method = prefix_method(how, v.method);
+    c.add(v, what);
+  }
+  return c.result();
+}
+
+Verdict Checker::first_order_rule(const Relation& claim) {
+  std::vector<GiNaC::symbol> smalls;
+  for (const auto& a : rule().smalls) smalls.push_back(GiNaC::ex_to<GiNaC::symbol>(symbol_of(a)));
+  const Step& A = ref_step(rule().into[0]);
+  std::vector<Eq> eqs;
+  std::string derived;
+  for (auto& q : equations(rule().into[0])) {
+    ex e = first_order(q.e.expand(), smalls);
+    derived += (derived.empty() ? "" : "; ") + text(e) + " = 0";
+    eqs.push_back({e, ex(), A.label});
+  }
+  res_.derived = derived;
+  std::vector<ex> sd = sides(claim);
+  if (sd.size() < 2) fail(s_.claim_pos, "the claim of 'by first_order' must be an equation");
+  return links_follow(sd, eqs, "first order");
+}
+
+Verdict Checker::differentiate(const Relation& claim) {
+  ex t = symbol_of(*rule().var);
+  std::vector<Eq> eqs, originals;
+  std::string derived;
+  for (const auto& a : rule().refs)
+    for (auto& q : equations(a)) {
+      ex de = q.e.diff(GiNaC::ex_to<GiNaC::symbol>(t));
+      eqs.push_back({de, ex(), q.from});
+      originals.push_back(q);
+    }
+  // the derivative of the first equation, as derived
+  {
+    const Relation& r = claim_of(ref_step(rule().refs[0]));
+    std::vector<ex> as = sides(r);
+    if (as.size() >= 2)
+      derived = text(as[0].diff(GiNaC::ex_to<GiNaC::symbol>(t))) + " = " +
+                text(as[1].diff(GiNaC::ex_to<GiNaC::symbol>(t)));
+  }
+  res_.derived = derived;
+  eqs.insert(eqs.end(), originals.begin(), originals.end());
+  std::vector<ex> sd = sides(claim);
+  if (sd.size() < 2) fail(s_.claim_pos, "the claim of 'by differentiate' must be an equation");
+  return links_follow(sd, eqs, "differentiate");
+}
+
+Verdict Checker::integrate(const Relation& claim) {
+  ex t = symbol_of(*rule().var);
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  ex T0 = conv(rule().point->value);
+  auto inst = [&](const std::vector<Eq>& eqs, const std::vector<ex>& at) {
+    std::vector<Eq> out = eqs;
+    for (const auto& p : at)
+      for (const auto& q : eqs) out.push_back({q.e.subs(t == p), ex(), q.from});
+    return out;
+  };
+  std::vector<Eq> ref_eqs = all_equations(rule().refs);
+  Node side0 = resolve_definitions(d_, claim.sides[0]);
+  if (side0.kind == NodeKind::Call && side0.text == "integral") {
+    // integral(f, x, a, b) = G: dG/db = f(b) and G = 0 at b = a.
+    if (side0.args.size() != 4) fail(side0.pos, "expected integral(f, x, a, b)", side0.length);
+    ex f = to_ginac(side0.args[0], d_.symbols);
+    ex x = to_ginac(side0.args[1], d_.symbols);
+    ex a = to_ginac(side0.args[2], d_.symbols);
+    ex b = to_ginac(side0.args[3], d_.symbols);
+    if (!GiNaC::is_a<GiNaC::symbol>(b))
+      fail(side0.args[3].pos, "the upper limit of the integral must be a symbol (it is differentiated)",
+           side0.args[3].length);
+    if (!x.is_equal(t)) fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
+    if (claim.sides.size() < 2) fail(s_.claim_pos, "expected 'integral(f, x, a, b) = G'");
+    std::vector<Eq> eqs = inst(ref_eqs, {b, a});
+    const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
+    Combiner c;
+    for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+      ex G = conv(claim.sides[i]);
+      Verdict v1 = follows(G.diff(bs), f.subs(x == b), eqs);
+      v1.method = prefix_method("d/d" + text(b) + " of the closed form", v1.method);
+      c.add(v1, "side " + std::to_string(i + 1) + ", derivative");
+      Verdict v2 = follows(G.subs(b == a), 0, eqs);
+      v2.method = prefix_method("value at the lower limit", v2.method);
+      c.add(v2, "side " + std::to_string(i + 1) + ", at " + text(b) + " = " + text(a));
+      if (i == 1) res_.derived = "d/d" + text(b) + " (" + text(G) + ") = " + text(G.diff(bs));
+    }
+    return c.result();
+  }
+  // The ODE form: A is diff(Y, t) = f; the claim is Y = G.
+  const Relation& ar = claim_of(ref_step(rule().refs[0]));
+  Node alhs = resolve_definitions(d_, ar.sides[0]);
+  if (ar.sides.size() < 2 || alhs.kind != NodeKind::Call || alhs.text != "diff" || alhs.args.size() < 2 ||
+      (alhs.args.size() == 3 && to_text(alhs.args[2]) != "1"))
+    fail(rule().refs[0].pos, "'" + rule().refs[0].label + "' must be an ODE 'diff(y(t), t) = f' for 'by integrate'",
+         rule().refs[0].length);
+  ex Y = to_ginac(alhs.args[0], d_.symbols);
+  ex f = conv(ar.sides.back());
+  if (claim.sides.size() < 2) fail(s_.claim_pos, "expected the claim 'y(t) = G'");
+  ex cl = conv(claim.sides[0]);
+  if (!cl.is_equal(Y)) {
+    Verdict v = prove_equal(cl, Y, d_.symbols, opt_);
+    if (!v.holds())
+      fail(claim.sides[0].pos, "the claim must start with '" + to_text(alhs.args[0]) + " = ...' (the function of the ODE)",
+           claim.sides[0].length);
+  }
+  // initial value
+  ex y0 = Y.subs(t == T0), y0_value = y0;
+  for (const auto& w : rule().with) {
+    ex l = conv(w.equation.sides[0]), r = conv(w.equation.sides[1]);
+    if (l.is_equal(y0)) y0_value = r;
+    else fail(w.pos, "expected the initial value '" + text(y0) + " = value' after 'with'", w.length);
+  }
+  std::vector<Eq> extra;
+  for (std::size_t i = 1; i < rule().refs.size(); ++i) {
+    auto e = equations(rule().refs[i]);
+    extra.insert(extra.end(), e.begin(), e.end());
+  }
+  extra = inst(extra, {T0});
+  Combiner c;
+  for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+    ex G = conv(claim.sides[i]);
+    ex fG = f.subs(Y == G);
+    Verdict v1 = follows(G.diff(ts), fG, extra);
+    v1.method = prefix_method("d/d" + text(t) + " of the closed form", v1.method);
+    c.add(v1, "side " + std::to_string(i + 1) + ", derivative");
+    Verdict v2 = follows(G.subs(t == T0), y0_value, extra);
+    v2.method = prefix_method("initial value", v2.method);
+    c.add(v2, "side " + std::to_string(i + 1) + ", at " + text(t) + " = " + text(T0));
+    if (i == 1) res_.derived = "d/d" + text(t) + " (" + text(G) + ") = " + text(G.diff(ts));
+  }
+  return c.result();
+}
+
+Verdict Checker::solves_ode(const Relation& claim) {
+  ex t = symbol_of(*rule().var);
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  if (claim.sides.size() < 2) fail(s_.claim_pos, "expected the claim 'y(t) = G'");
+  ex Y = conv(claim.sides[0]);
+  if (pool_function_index(Y) < 0 || pool_derivative_order(Y) != 0)
+    fail(claim.sides[0].pos, "the claim must be 'y(t) = G' with y a declared function", claim.sides[0].length);
+  ex G = conv(claim.sides.back());
+  GiNaC::exmap m;
+  ex dY = Y, dG = G;
+  for (int n = 1; n <= 4; ++n) {
+    dY = dY.diff(ts);
+    dG = dG.diff(ts);
+    m[dY] = dG;
+  }
+  m[Y] = G;
+  Combiner c;
+  const Relation& ar = claim_of(ref_step(rule().refs[0]));
+  std::vector<ex> as = sides(ar);
+  if (as.size() < 2) fail(rule().refs[0].pos, "'" + rule().refs[0].label + "' must be an ODE (an equation)", rule().refs[0].length);
+  for (std::size_t i = 0; i + 1 < as.size(); ++i) {
+    ex a = as[i].subs(m, GiNaC::subs_options::no_pattern), b = as[i + 1].subs(m, GiNaC::subs_options::no_pattern);
+    Verdict v = prove_equal(a, b, d_.symbols, opt_);
+    v.method = prefix_method("ODE residual", v.method);
+    c.add(v, "the ODE");
+  }
+  for (const auto& w : rule().with) {
+    const Node& l = w.equation.sides[0];
+    if (l.kind != NodeKind::Call || l.args.size() != 1)
+      fail(w.pos, "expected an initial condition 'y(T0) = value' after 'with'", w.length);
+    ex at = conv(l.args[0]);
+    ex lhs = conv(l);
+    if (!lhs.is_equal(Y.subs(t == at)))
+      fail(w.pos, "the initial condition must be for the claimed function, e.g. '" + text(Y.subs(t == at)) + " = value'",
+           w.length);
+    Verdict v = prove_equal(G.subs(t == at), conv(w.equation.sides[1]), d_.symbols, opt_);
+    v.method = prefix_method("initial condition", v.method);
+    c.add(v, "initial condition " + w.label);
+  }
+  for (std::size_t i = 1; i + 1 < claim.sides.size(); ++i) {
+    Verdict v = prove_equal(conv(claim.sides[i]), G, d_.symbols, opt_);
+    c.add(v, "side " + std::to_string(i + 1));
+  }
+  res_.derived = "residual of the ODE with " + text(Y) + " = " + text(G);
+  return c.result();
+}
+
+Verdict Checker::run(const Relation& claim) {
+  const std::string& r = rule().name;
+  if (r == "given") return proved("given", "premise taken from the source");
+  if (r == "definition") return proved("definition", "introduces " + to_text(claim.sides[0]));
+  if (r == "rewrite") return rewrite(claim);
+  if (r == "substitute") return substitute(claim);
+  if (r == "solve") return solve(claim);
+  if (r == "limit") return limit_or_series(claim, true);
+  if (r == "series") return limit_or_series(claim, false);
+  if (r == "first_order") return first_order_rule(claim);
+  if (r == "differentiate") return differentiate(claim);
+  if (r == "integrate") return integrate(claim);
+  if (r == "solves_ode") return solves_ode(claim);
+  fail(rule().pos, "unknown rule '" + r + "'");
+}
+
+// Dimension of every side; a mismatch is an error at the claim with both dimensions.
+void check_dimensions(const Derivation& d, const Relation& claim, StepResult& res) {
+  std::vector<Dimension> dims;
+  for (const auto& side : claim.sides) {
+    try {
+      dims.push_back(dimension_of(side, d.symbols));
+    } catch (const InputError& e) {
+      res.errors.push_back(with_line(d, e));
+      return;
+    }
+  }
+  if (dims.empty()) return;
+  for (std::size_t i = 1; i < dims.size(); ++i) {
+    if (dims[i] != dims[0]) {
+      const Node& n = claim.sides[i];
+      res.errors.push_back(positioned(
+          d, n.pos,
+          "dimension mismatch: '" + to_text(claim.sides[0]) + "' has dimension " + dims[0].to_string() + " but '" +
+              to_text(n) + "' has dimension " + dims[i].to_string(),
+          n.length));
+      return;
+    }
+  }
+  res.dimension = dims[0].to_string();
+}
+
+Verdict run_rule(const Derivation& d, const Step& s, const Relation& claim, const ProveOptions& opt,
+                 StepResult& res) {
+  try {
+    Checker c(d, s, opt, res);
+    return c.run(claim);
+  } catch (const StepError& e) {
+    res.errors.push_back(e.error);
+    return undecided(s.rule.name, "the step could not be checked: " + e.error.message());
+  } catch (const InputError& e) {
+    res.errors.push_back(with_line(d, e));
+    return undecided(s.rule.name, "the step could not be checked: " + e.message());
+  } catch (const UndecidedLimit& e) {
+    return undecided("limit", e.what());
+  } catch (const std::exception& e) {
+    // GiNaC arithmetic errors (division by zero in a substitution, pole in a series, ...):
+    // the rule could not carry out its derivation; never shown with GiNaC internals.
+    std::string what = e.what();
+    if (what.find("division by zero") != std::string::npos) what = "division by zero while deriving";
+    else what = "the symbolic computation failed";
+    return undecided(s.rule.name, what);
+  }
+}
+
+}  // namespace
+
+StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt) {
+  auto t0 = std::chrono::steady_clock::now();
+  StepResult res;
+  res.step = &s;
+  const Relation& claim = s.erratum ? s.erratum->corrected : s.claim;
+  if (s.erratum) {
+    // The printed claim: an undefined symbol is reported at its position; a well-formed but
+    // wrong printed claim is reported with its refutation.
+    if (auto err = erratum_error(d, s)) {
+      res.errors.push_back(*err);
+      res.erratum_reported = true;
+    } else {
+      StepResult printed;
+      printed.step = &s;
+      Verdict pv = run_rule(d, s, s.claim, opt, printed);
+      if (pv.kind == VerdictKind::Refuted || !printed.errors.empty()) {
+        std::string why = !printed.errors.empty() ? printed.errors[0].message()
+                                                  : "refuted" + (pv.detail.empty() ? std::string() : " (" + pv.detail + ")");
+        res.errors.push_back(positioned(d, s.claim_pos, "the printed claim is wrong: " + why + "; erratum: " + s.erratum->why,
+                                        static_cast<int>(std::max<std::size_t>(1, s.claim_text.size()))));
+        res.erratum_reported = true;
+      } else {
+        res.errors.push_back(positioned(d, s.erratum->pos,
+                                        "an erratum is declared but the printed claim is not refuted (" +
+                                            std::string(to_string(pv.kind)) + "); remove the erratum or fix the claim",
+                                        7));
+      }
+    }
+  }
+  check_dimensions(d, claim, res);
+  res.verdict = run_rule(d, s, claim, opt, res);
+  // Side conditions of the claim's sides.
+  try {
+    for (const auto& side : claim.sides) {
+      Node n = resolve_definitions(d, side);
+      std::function<void(const Node&)> walk = [&](const Node& m) {
+        if (m.kind == NodeKind::Call && m.text == "integral") {
+          for (const auto& a : m.args) walk(a);
+          return;
+        }
+        ex e = to_ginac(m, d.symbols);
+        for (auto& sc : side_conditions(e, d.symbols)) {
+          bool dup = false;
+          for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
+          if (!dup) res.verdict.side_conditions.push_back(sc);
+        }
+      };
+      bool has_integral = false;
+      std::function<void(const Node&)> find = [&](const Node& m) {
+        if (m.kind == NodeKind::Call && m.text == "integral") has_integral = true;
+        for (const auto& a : m.args) find(a);
+      };
+      find(n);
+      if (has_integral) {
+        for (const auto& a : n.args) walk(a);
+        if (n.kind == NodeKind::Call && n.text == "integral") continue;
+      } else {
+        walk(n);
+      }
+    }
+  } catch (const std::exception&) {
+    // conversion problems were reported by the rule already
+  }
+  // A stable form must equal the form it replaces.
+  if (s.stable_of) {
+    const Step* other = d.find(*s.stable_of);
+    try {
+      auto a = claim_sides(d, s);
+      auto b = claim_sides(d, *other);
+      Verdict v = prove_equal(a.back(), b.back(), d.symbols, opt);
+      if (!v.holds())
+        res.errors.push_back(positioned(d, s.pos,
+                                        "the stable form is not equal to '" + *s.stable_of + "' (" +
+                                            std::string(to_string(v.kind)) + (v.detail.empty() ? "" : ": " + v.detail) + ")",
+                                        static_cast<int>(s.label.size())));
+    } catch (const std::exception& e) {
+      res.errors.push_back(positioned(d, s.pos, "the stable form cannot be compared with '" + *s.stable_of + "'",
+                                      static_cast<int>(s.label.size())));
+    }
+  }
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+int CheckSummary::exit_code(bool strict) const {
+  if (refuted > 0 || errors > 0) return 1;
+  if (undecided > 0) return 3;
+  if (strict && errata > 0) return 1;
+  return 0;
+}
+
+CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt) {
+  CheckSummary sum;
+  for (const auto& s : d.steps) {
+    StepResult r = check_step(d, s, opt);
+    std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
+    if (r.erratum_reported) ++sum.errata;
+    if (own_errors > 0) ++sum.errors;
+    else switch (r.verdict.kind) {
+        case VerdictKind::Proved: ++sum.proved; break;
+        case VerdictKind::HoldsNumerically: ++sum.holds_numerically; break;
+        case VerdictKind::Refuted: ++sum.refuted; break;
+        case VerdictKind::Undecided: ++sum.undecided; break;
+      }
+    sum.results.push_back(std::move(r));
+  }
+  return sum;
+}
+
+}  // namespace dc
