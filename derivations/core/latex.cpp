@@ -112,8 +112,9 @@ class Writer {
   }
 
   std::string product(const Node& n) {
-    std::vector<const Node*> fs;
-    factors(n, fs);
+    std::vector<const Node*> fs;  // n's own parentheses are the caller's business
+    factors(n.args[0], fs);
+    factors(n.args[1], fs);
     return join(fs);
   }
 
@@ -126,7 +127,7 @@ class Writer {
     const Node& num = n.args[0];
     const Node& den = n.args[1];
     std::vector<const Node*> fs;
-    factors(num, fs);
+    if (!num.parenthesized) factors(num, fs);
     if (fs.size() > 1) {
       std::size_t j = fs.size();
       for (std::size_t i = 0; i < fs.size(); ++i)
@@ -339,13 +340,40 @@ class DocumentWriter {
     out += "% ---- " + file + "\n";
     out += "\\section*{" + shown + "}\n";
     out += "\\addcontentsline{toc}{section}{" + shown + "}\n\n";
+    // Without annotations, consecutive steps share one gather block (a handout's stack of
+    // equations); an erratum step (it carries a footnote) and annotated steps (margin notes)
+    // stand in an environment of their own.
+    std::vector<const Step*> run;
+    auto flush = [&] {
+      if (run.empty()) return;
+      out += "\\begin{gather}\n";
+      for (std::size_t i = 0; i < run.size(); ++i) {
+        const Step& s = *run[i];
+        const Relation& claim = s.claim;
+        out += "% " + s.label + " (" + file + ":" + std::to_string(s.pos.line) + ")\n";
+        if (latex_prefers_aligned(claim, d.symbols))
+          out += "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}";
+        else
+          out += latex_relation(claim, d.symbols, false);
+        out += s.tag.empty() ? " \\notag" : " \\tag{" + latex_escape_text(s.tag) + "}";
+        out += i + 1 < run.size() ? " \\\\\n" : "\n";
+      }
+      out += "\\end{gather}\n\n";
+      run.clear();
+    };
     for (const Step& s : d.steps) {
+      if (!opt_.annotate && !s.erratum) {
+        run.push_back(&s);
+        continue;
+      }
+      flush();
       const StepResult* r = nullptr;
       if (checks)
         for (const auto& res : checks->results)
           if (res.step == &s || (res.step && res.step->label == s.label)) r = &res;
       out += step(d, s, r);
     }
+    flush();
     return out;
   }
 
