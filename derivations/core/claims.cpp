@@ -1,0 +1,508 @@
+#include "derivations/core/claims.hpp"
+
+#include <chrono>
+#include <functional>
+
+#include "derivations/core/limit.hpp"
+#include "derivations/core/printer.hpp"
+#include "derivations/core/report.hpp"
+
+namespace dc {
+
+namespace {
+
+using GiNaC::ex;
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9') || c == '_'; }
+
+SourcePos advance(const SourcePos& o, std::size_t offset) {
+  SourcePos p = o;
+  p.col += static_cast<int>(offset);
+  return p;
+}
+
+void trim(const std::string& t, std::size_t& b, std::size_t& e) {
+  while (b < e && is_space(t[b])) ++b;
+  while (e > b && is_space(t[e - 1])) --e;
+}
+
+// Attach the offending text so errors quote it with a caret.
+InputError quoted(const InputError& e, const std::string& text) {
+  if (!e.line_text().empty()) return e;
+  return e.with_line_text(text);
+}
+
+const char* op_text(Constraint::Op op) {
+  switch (op) {
+    case Constraint::Op::Lt: return "<";
+    case Constraint::Op::Le: return "<=";
+    case Constraint::Op::Gt: return ">";
+    case Constraint::Op::Ge: return ">=";
+    case Constraint::Op::Ne: return "!=";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<AssumptionItem> parse_assumptions(const std::string& text, const SourcePos& origin) {
+  std::vector<AssumptionItem> out;
+  auto fail = [&](std::size_t at, const std::string& msg, int len = 1) {
+    throw InputError(advance(origin, at), msg, len, text);
+  };
+  // split at top-level commas ([0, 1] and (0, pi) contain commas)
+  std::vector<std::pair<std::size_t, std::size_t>> items;
+  int depth = 0;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    char c = i < text.size() ? text[i] : ',';
+    if (c == '(' || c == '[') ++depth;
+    else if (c == ')' || c == ']') --depth;
+    if (c == ',' && depth <= 0) {
+      std::size_t b = from, e = i;
+      trim(text, b, e);
+      if (b < e) items.push_back({b, e});
+      else if (i < text.size() || !items.empty()) fail(b, "expected an assumption (e.g. 'm1 > 0', 'v1 real', 'e in [0,1]')");
+      from = i + 1;
+      depth = 0;
+    }
+  }
+  for (auto [b, e] : items) {
+    std::string item = text.substr(b, e - b);
+    // a relation?
+    std::size_t op_at = std::string::npos, op_len = 0;
+    Constraint::Op op = Constraint::Op::Gt;
+    int d = 0;
+    for (std::size_t i = 0; i < item.size(); ++i) {
+      char c = item[i];
+      if (c == '(') ++d;
+      else if (c == ')') --d;
+      if (d != 0) continue;
+      char n = i + 1 < item.size() ? item[i + 1] : '\0';
+      std::size_t len = 0;
+      Constraint::Op o = Constraint::Op::Gt;
+      if (c == '<' && n == '=') len = 2, o = Constraint::Op::Le;
+      else if (c == '>' && n == '=') len = 2, o = Constraint::Op::Ge;
+      else if (c == '!' && n == '=') len = 2, o = Constraint::Op::Ne;
+      else if (c == '<') len = 1, o = Constraint::Op::Lt;
+      else if (c == '>') len = 1, o = Constraint::Op::Gt;
+      else if (c == '=') fail(b + i, "'=' is not an assumption; expected <, <=, >, >=, != or a domain ('x real', 'x in [0,1]')");
+      if (len) {
+        if (op_at != std::string::npos) fail(b + i, "expected one comparison per assumption; separate them with ','", static_cast<int>(len));
+        op_at = i;
+        op_len = len;
+        op = o;
+        i += len - 1;
+      }
+    }
+    AssumptionItem a;
+    a.pos = advance(origin, b);
+    a.text = item;
+    if (op_at != std::string::npos) {
+      std::size_t lb = 0, le = op_at, rb = op_at + op_len, re = item.size();
+      trim(item, lb, le);
+      trim(item, rb, re);
+      if (lb >= le) fail(b + op_at, std::string("expected an expression before '") + op_text(op) + "'");
+      if (rb >= re) fail(b + op_at, std::string("expected an expression after '") + op_text(op) + "'");
+      try {
+        a.lhs = parse_expression(std::string_view(item).substr(lb, le - lb), advance(origin, b + lb));
+        a.rhs = parse_expression(std::string_view(item).substr(rb, re - rb), advance(origin, b + rb));
+      } catch (const InputError& err) {
+        throw quoted(err, text);
+      }
+      a.op = op;
+      bool zero = a.rhs.kind == NodeKind::Number && a.rhs.text == "0";
+      if (a.lhs.kind == NodeKind::Symbol && zero && op != Constraint::Op::Ne && op != Constraint::Op::Le) {
+        a.name = a.lhs.text;
+        a.domain = op == Constraint::Op::Gt ? Domain::positive()
+                   : op == Constraint::Op::Ge ? Domain::nonnegative()
+                                              : Domain::negative();
+      } else {
+        a.is_constraint = true;
+      }
+      out.push_back(std::move(a));
+      continue;
+    }
+    // NAME DOMAIN
+    std::size_t i = 0;
+    if (!ident_start(item[0])) fail(b, "expected a symbol name at the start of the assumption '" + item + "'");
+    while (i < item.size() && ident_char(item[i])) ++i;
+    a.name = item.substr(0, i);
+    std::size_t db = i, de = item.size();
+    trim(item, db, de);
+    if (db >= de)
+      fail(b + i, "expected a domain after '" + a.name + "': real, positive, nonnegative, negative or 'in [a, b]'");
+    try {
+      a.domain = parse_domain(item.substr(db, de - db), advance(origin, b + db));
+    } catch (const InputError& err) {
+      throw quoted(err, text);
+    }
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<std::string, DomainAt>& domains,
+                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos) {
+  SymbolTable table;
+  std::vector<std::string> order;
+  auto add = [&](const std::string& name) {
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  };
+  auto collect = [&](const Node& n) {
+    std::vector<const Node*> ids;
+    collect_identifiers(n, ids);
+    for (const Node* id : ids)
+      if (id->kind == NodeKind::Symbol && !is_reserved_name(id->text)) add(id->text);
+  };
+  for (const Node* e : exprs) collect(*e);
+  for (const auto& it : items)
+    if (it.is_constraint) {
+      collect(it.lhs);
+      collect(it.rhs);
+    }
+  for (const auto& [name, d] : domains) add(name);
+  for (const auto& name : order) {
+    SymbolInfo info;
+    info.name = name;
+    auto it = domains.find(name);
+    if (it != domains.end()) {
+      info.domain = it->second.domain;
+      info.pos = it->second.pos;
+    }
+    table.declare(std::move(info));
+  }
+  for (const auto& it : items) {
+    if (!it.is_constraint) continue;
+    Constraint c;
+    c.lhs = to_ginac(it.lhs, table);
+    c.rhs = to_ginac(it.rhs, table);
+    c.op = it.op;
+    c.text = it.text;
+    c.pos = it.pos;
+    table.add_constraint(std::move(c));
+  }
+  std::string why = check_satisfiable(table);
+  if (!why.empty()) throw InputError(assume_pos, "the assumptions cannot all hold (" + why + ")");
+  return table;
+}
+
+namespace {
+
+std::map<std::string, DomainAt> domain_map(const std::vector<AssumptionItem>& items, const std::string& text) {
+  std::map<std::string, DomainAt> out;
+  for (const auto& it : items) {
+    if (it.is_constraint) continue;
+    auto prev = out.find(it.name);
+    if (prev != out.end()) {
+      if (prev->second.domain.to_string() == it.domain.to_string()) continue;
+      throw InputError(it.pos,
+                       "conflicting assumptions for '" + it.name + "': " + prev->second.domain.to_string() + " and " +
+                           it.domain.to_string(),
+                       static_cast<int>(it.text.size()), text);
+    }
+    out[it.name] = {it.domain, it.pos};
+  }
+  return out;
+}
+
+}  // namespace
+
+Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::string& assume,
+                    const ProveOptions& opt) {
+  SourcePos lo{"<lhs>", 1, 1}, ro{"<rhs>", 1, 1}, ao{"<assume>", 1, 1};
+  Node l, r;
+  try {
+    l = parse_expression(lhs, lo);
+  } catch (const InputError& e) {
+    throw quoted(e, lhs);
+  }
+  try {
+    r = parse_expression(rhs, ro);
+  } catch (const InputError& e) {
+    throw quoted(e, rhs);
+  }
+  std::vector<AssumptionItem> items = parse_assumptions(assume, ao);
+  auto domains = domain_map(items, assume);
+  SymbolTable table;
+  try {
+    table = claim_table({&l, &r}, domains, items, ao);
+  } catch (const InputError& e) {
+    throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
+  }
+  ex a, b;
+  try {
+    a = to_ginac(l, table);
+  } catch (const InputError& e) {
+    throw quoted(e, lhs);
+  }
+  try {
+    b = to_ginac(r, table);
+  } catch (const InputError& e) {
+    throw quoted(e, rhs);
+  }
+  Verdict v = prove_equal(a, b, table, opt);
+  for (auto& sc : side_conditions(a - b, table)) v.side_conditions.push_back(sc);
+  return v;
+}
+
+// --- the claim bank ----------------------------------------------------------------------
+
+namespace {
+
+struct LineError {
+  std::string message;
+};
+
+class ClaimLine {
+ public:
+  ClaimLine(const nlohmann::json& j, int line_no, const std::string& file, const ProveOptions& opt)
+      : j_(j), line_(line_no), file_(file), opt_(opt) {}
+
+  Verdict run(const std::string& kind) {
+    std::vector<std::string> fields{"lhs", "rhs"};
+    if (kind == "limit" || kind == "antiderivative" || kind == "series_first_order" || kind == "solves_ode")
+      fields.push_back("var");
+    if (kind == "solves_ode") fields.push_back("solution");
+    std::map<std::string, Node> nodes;
+    for (const auto& f : fields) nodes[f] = expr(f);
+    if (kind == "limit" || kind == "series_first_order") point_node_ = point();
+    // symbols: identifiers of all expressions; y, yp, ypp for ODEs
+    std::map<std::string, DomainAt> domains = assumptions();
+    std::vector<const Node*> exprs;
+    for (auto& [k, n] : nodes) (void)k, exprs.push_back(&n);
+    if (point_node_ && !point_infinite_) exprs.push_back(&*point_node_);
+    std::vector<Node> initial_nodes;
+    if (kind == "solves_ode") initial_nodes = initial_values();
+    for (const auto& n : initial_nodes) exprs.push_back(&n);
+    try {
+      table_ = claim_table(exprs, domains, {}, SourcePos{file_, line_, 1});
+    } catch (const InputError& e) {
+      throw LineError{"in 'assumptions': " + e.message()};
+    }
+    auto conv = [&](const std::string& f) -> ex {
+      try {
+        return to_ginac(nodes.at(f), table_);
+      } catch (const InputError& e) {
+        throw LineError{"in field '" + f + "' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+      } catch (const UndecidedLimit& e) {
+        throw LineError{"in field '" + f + "': " + e.what()};
+      }
+    };
+    ex lhs = conv("lhs"), rhs = conv("rhs");
+    if (kind == "equal") return prove_equal(lhs, rhs, table_, opt_);
+    ex var = conv("var");
+    if (!GiNaC::is_a<GiNaC::symbol>(var)) throw LineError{"field 'var' must be a symbol name"};
+    const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(var);
+    if (kind == "antiderivative") {
+      // d rhs / d var = lhs
+      Verdict v = prove_equal(rhs.diff(x), lhs, table_, opt_);
+      v.method = "d/d" + x.get_name() + " of rhs + " + v.method;
+      return v;
+    }
+    if (kind == "limit") {
+      ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+      LimitResult L = compute_limit(lhs, x, p, point_infinite_, table_);
+      if (!L.ok) {
+        Verdict v;
+        v.kind = VerdictKind::Undecided;
+        v.method = "limit";
+        v.reason = L.reason;
+        return v;
+      }
+      std::string how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+      if (L.infinite != 0 || rhs_infinite_ != 0) {
+        Verdict v;
+        v.method = how;
+        if (L.infinite == rhs_infinite_) v.kind = VerdictKind::Proved;
+        else {
+          v.kind = VerdictKind::Refuted;
+          v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
+          v.rhs_value = j_.at("rhs").get<std::string>();
+          v.detail = "the limit is " + v.lhs_value;
+        }
+        return v;
+      }
+      Verdict v = prove_equal(L.value, rhs, table_, opt_);
+      v.method = how + " + " + v.method;
+      return v;
+    }
+    if (kind == "series_first_order") {
+      ex p = to_ginac(*point_node_, table_);
+      std::string why;
+      auto s = series_first_order(lhs, x, p, &why);
+      if (!s) {
+        Verdict v;
+        v.kind = VerdictKind::Undecided;
+        v.method = "series";
+        v.reason = why.empty() ? "the series expansion failed" : why;
+        return v;
+      }
+      Verdict v = prove_equal(*s, rhs, table_, opt_);
+      v.method = "series (first order) + " + v.method;
+      return v;
+    }
+    // solves_ode: the ODE lhs = rhs in y, yp, ypp; the claimed solution; initial values.
+    ex sol = conv("solution");
+    GiNaC::exmap m;
+    const char* names[] = {"y", "yp", "ypp"};
+    ex d = sol;
+    for (int k = 0; k < 3; ++k) {
+      if (const SymbolInfo* info = table_.find(names[k])) {
+        if (sol.has(info->sym)) throw LineError{std::string("the solution must not contain '") + names[k] + "'"};
+        m[info->sym] = d;
+      }
+      d = d.diff(x);
+    }
+    Verdict v = prove_equal(lhs.subs(m), rhs.subs(m), table_, opt_);
+    v.method = "ODE residual + " + v.method;
+    if (!v.holds()) return v;
+    std::vector<std::string> methods{v.method};
+    for (std::size_t i = 0; i < initial_nodes.size() / 2; ++i) {
+      ex at = to_ginac(initial_nodes[2 * i], table_);
+      ex value = to_ginac(initial_nodes[2 * i + 1], table_);
+      ex s = sol;
+      for (int k = 0; k < initial_orders_[i]; ++k) s = s.diff(x);
+      Verdict iv = prove_equal(s.subs(x == at), value, table_, opt_);
+      if (!iv.holds()) {
+        iv.method = "initial condition " + std::to_string(i + 1) + " + " + iv.method;
+        return iv;
+      }
+    }
+    if (!initial_nodes.empty()) v.method += ", initial conditions";
+    return v;
+  }
+
+ private:
+  const nlohmann::json& j_;
+  int line_;
+  std::string file_;
+  const ProveOptions& opt_;
+  SymbolTable table_;
+  std::optional<Node> point_node_;
+  int point_infinite_ = 0;
+  int rhs_infinite_ = 0;
+  std::vector<int> initial_orders_;
+
+  std::string text_field(const std::string& f, const nlohmann::json& j) {
+    if (!j.contains(f)) throw LineError{"missing field '" + f + "'"};
+    const auto& v = j.at(f);
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number()) return v.dump();
+    throw LineError{"field '" + f + "' must be a string"};
+  }
+
+  Node parse_field(const std::string& f, const std::string& text) {
+    try {
+      return parse_expression(text, SourcePos{file_, line_, 1});
+    } catch (const InputError& e) {
+      throw LineError{"in field '" + f + "' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+    }
+  }
+
+  Node expr(const std::string& f) {
+    std::string t = text_field(f, j_);
+    if (f == "rhs" && (t == "oo" || t == "-oo") && j_.value("kind", "") == "limit") {
+      rhs_infinite_ = t == "oo" ? 1 : -1;
+      return parse_field(f, "0");
+    }
+    return parse_field(f, t);
+  }
+
+  std::optional<Node> point() {
+    std::string t = text_field("point", j_);
+    if (t == "oo" || t == "+oo") { point_infinite_ = 1; return parse_field("point", "0"); }
+    if (t == "-oo") { point_infinite_ = -1; return parse_field("point", "0"); }
+    return parse_field("point", t);
+  }
+
+  std::map<std::string, DomainAt> assumptions() {
+    std::map<std::string, DomainAt> out;
+    if (!j_.contains("assumptions")) return out;
+    const auto& a = j_.at("assumptions");
+    if (!a.is_object()) throw LineError{"field 'assumptions' must be an object {\"name\": \"domain\"}"};
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      if (!it.value().is_string()) throw LineError{"assumption '" + it.key() + "' must be a string domain"};
+      bool ok = !it.key().empty() && ident_start(it.key()[0]);
+      for (char c : it.key()) ok = ok && ident_char(c);
+      if (!ok || is_reserved_name(it.key())) throw LineError{"assumption key '" + it.key() + "' is not a symbol name"};
+      try {
+        out[it.key()] = {parse_domain(it.value().get<std::string>(), SourcePos{file_, line_, 1}), {file_, line_, 1}};
+      } catch (const InputError& e) {
+        throw LineError{"in assumption '" + it.key() + "': " + e.message()};
+      }
+    }
+    return out;
+  }
+
+  std::vector<Node> initial_values() {
+    std::vector<Node> out;
+    if (!j_.contains("initial")) return out;
+    const auto& a = j_.at("initial");
+    if (!a.is_array()) throw LineError{"field 'initial' must be a list of {\"at\", \"order\", \"value\"}"};
+    for (const auto& c : a) {
+      if (!c.is_object()) throw LineError{"each initial condition must be an object {\"at\", \"order\", \"value\"}"};
+      int order = 0;
+      if (c.contains("order")) {
+        if (!c.at("order").is_number_integer() || c.at("order").get<int>() < 0 || c.at("order").get<int>() > 1)
+          throw LineError{"'order' of an initial condition must be 0 or 1"};
+        order = c.at("order").get<int>();
+      }
+      initial_orders_.push_back(order);
+      out.push_back(parse_field("initial.at", text_field("at", c)));
+      out.push_back(parse_field("initial.value", text_field("value", c)));
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
+                                        const ProveOptions& opt) {
+  nlohmann::ordered_json out;
+  auto t0 = std::chrono::steady_clock::now();
+  nlohmann::json j;
+  auto error = [&](const std::string& msg) {
+    out["line"] = line_no;
+    out["verdict"] = "error";
+    out["error"] = file + ":" + std::to_string(line_no) + ": error: " + msg;
+    return out;
+  };
+  try {
+    j = nlohmann::json::parse(line);
+  } catch (const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: ..." -> keep the part
+    // after the library's tag
+    auto p = what.find("] ");
+    return error("malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+  if (!j.is_object()) return error("expected a JSON object per line");
+  if (j.contains("id")) out["id"] = j.at("id");
+  if (!j.contains("kind") || !j.at("kind").is_string())
+    return error("missing field 'kind' (one of equal, limit, antiderivative, series_first_order, solves_ode)");
+  std::string kind = j.at("kind").get<std::string>();
+  static const std::vector<std::string> kinds{"equal", "limit", "antiderivative", "series_first_order", "solves_ode"};
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+    return error("unknown kind '" + kind + "'; expected one of equal, limit, antiderivative, series_first_order, solves_ode");
+  out["kind"] = kind;
+  Verdict v;
+  try {
+    ClaimLine c(j, line_no, file, opt);
+    v = c.run(kind);
+  } catch (const LineError& e) {
+    return error(e.message);
+  } catch (const InputError& e) {
+    return error(e.message());
+  } catch (const std::exception& e) {
+    return error("the claim could not be evaluated (symbolic computation failed)");
+  }
+  for (auto& [k, val] : verdict_json(v).items()) out[k] = val;
+  out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace dc
