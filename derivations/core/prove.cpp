@@ -1,0 +1,781 @@
+// prove_equal: the cascade that decides whether two expressions are equal (see prove.hpp).
+#include "derivations/core/prove.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
+
+namespace dc {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+namespace d = detail;
+
+const char* to_string(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved: return "proved";
+    case VerdictKind::HoldsNumerically: return "holds_numerically";
+    case VerdictKind::Refuted: return "refuted";
+    case VerdictKind::Undecided: return "undecided";
+  }
+  return "undecided";
+}
+
+DigitsGuard::DigitsGuard(long digits) : saved_(GiNaC::Digits) { GiNaC::Digits = digits; }
+DigitsGuard::~DigitsGuard() { GiNaC::Digits = saved_; }
+
+// ------------------------------------------------------------------ resource estimate
+
+namespace {
+
+// Terms of expand(e), and the worst intermediate (function arguments are expanded too).
+double estimate_rec(const ex& e, double& worst) {
+  double r = 1;
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    r = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) r += estimate_rec(e.op(i), worst);
+  } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i) r *= estimate_rec(e.op(i), worst);
+  } else if (GiNaC::is_a<GiNaC::power>(e)) {
+    double k = estimate_rec(e.op(0), worst);
+    const ex& x = e.op(1);
+    if (GiNaC::is_a<numeric>(x) && GiNaC::ex_to<numeric>(x).is_pos_integer()) {
+      const numeric& nn = GiNaC::ex_to<numeric>(x);
+      double n = nn.to_double();
+      if (k > 1) {
+        // multinomial: C(n + k - 1, k - 1) monomials, each coefficient with ~n*log10(k) digits
+        double log_terms = std::lgamma(n + k) - std::lgamma(k) - std::lgamma(n + 1);
+        double digits_weight = std::max(1.0, n * std::log10(k) / 20.0);
+        r = std::exp(std::min(log_terms, 700.0)) * digits_weight;
+      } else if (GiNaC::is_a<GiNaC::mul>(e.op(0))) {
+        r = 1;
+        for (std::size_t i = 0; i < e.op(0).nops(); ++i)
+          r *= estimate_rec(GiNaC::pow(e.op(0).op(i), x), worst);
+      } else {
+        r = 1;
+      }
+    } else {
+      r = 1;  // negative or symbolic powers stay unexpanded; the base is expanded
+      worst = std::max(worst, k);
+    }
+  } else if (e.nops() > 0) {
+    for (std::size_t i = 0; i < e.nops(); ++i) worst = std::max(worst, estimate_rec(e.op(i), worst));
+    r = 1;
+  }
+  worst = std::max(worst, r);
+  return r;
+}
+
+}  // namespace
+
+double estimate_expanded_terms(const ex& e) {
+  double worst = 1;
+  double r = estimate_rec(e, worst);
+  return std::max(r, worst);
+}
+
+// ------------------------------------------------------------------ stage 2: transcendental
+
+namespace {
+
+bool is_fn(const ex& e, const char* name) {
+  return GiNaC::is_exactly_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
+}
+
+// log of a positive rational as a sum over prime logs: log(6) -> log(2) + log(3), so constant
+// log identities reduce to zero. Only for moderate integers (trial division up to 1e6).
+ex log_of_positive_rational(const numeric& q) {
+  if (q == 1) return 0;
+  auto split_int = [](numeric n, ex& acc, int sign) -> bool {
+    if (n > numeric("1000000000000")) return false;
+    long v = n.to_long();
+    ex part = 0;
+    for (long p = 2; p * p <= v; ++p) {
+      int k = 0;
+      while (v % p == 0) {
+        v /= p;
+        ++k;
+      }
+      if (k) part += k * GiNaC::log(ex(p));
+    }
+    if (v > 1) part += GiNaC::log(ex(v));
+    acc += sign * part;
+    return true;
+  };
+  ex acc = 0;
+  if (!split_int(q.numer(), acc, 1) || !split_int(q.denom(), acc, -1)) return GiNaC::log(ex(q));
+  return acc;
+}
+
+ex log_split(const ex& a, const SymbolTable& ctx);
+
+// log(a) for a that is not a product: powers of positive bases, exp(real), positive rationals.
+ex log_atom(const ex& a, const SymbolTable& ctx) {
+  if (GiNaC::is_a<numeric>(a)) {
+    const numeric& q = GiNaC::ex_to<numeric>(a);
+    if (q.is_rational() && q.is_positive()) return log_of_positive_rational(q);
+    return GiNaC::log(a);
+  }
+  if (GiNaC::is_a<GiNaC::power>(a)) {
+    // log(b^x) = x log(b) for b > 0 and real x
+    if (d::provably_positive(a.op(0), ctx) && d::provably_real(a.op(1), ctx))
+      return a.op(1) * log_split(a.op(0), ctx);
+    return GiNaC::log(a);
+  }
+  if (is_fn(a, "exp") && d::provably_real(a.op(0), ctx)) return a.op(0);
+  return GiNaC::log(a);
+}
+
+// log(p * r) = log(p) + log(r) whenever p > 0 (the argument of p*r is that of r), so every
+// provably positive factor is split off, whatever the sign of the rest.
+ex log_split(const ex& a, const SymbolTable& ctx) {
+  if (!GiNaC::is_a<GiNaC::mul>(a)) return log_atom(a, ctx);
+  ex sum = 0, rest = 1;
+  bool split = false;
+  for (std::size_t i = 0; i < a.nops(); ++i) {
+    const ex& f = a.op(i);
+    bool pos = false;
+    if (GiNaC::is_a<GiNaC::power>(f))
+      pos = d::provably_positive(f.op(0), ctx) && d::provably_real(f.op(1), ctx);
+    else
+      pos = d::provably_positive(f, ctx);
+    if (pos) {
+      sum += log_atom(f, ctx);
+      split = true;
+    } else {
+      rest *= f;
+    }
+  }
+  if (!split) return GiNaC::log(a);
+  if (!rest.is_equal(1)) sum += GiNaC::log(rest);
+  return sum;
+}
+
+struct TranscendentalRewrite : GiNaC::map_function {
+  const SymbolTable& ctx;
+  explicit TranscendentalRewrite(const SymbolTable& c) : ctx(c) {}
+  ex operator()(const ex& e) override {
+    if (e.nops() == 0) return e;
+    ex m = e.map(*this);
+    if (is_fn(m, "log")) return log_split(m.op(0), ctx);
+    if (is_fn(m, "exp")) {
+      // exp(sum) = prod exp(term); exp(c*log(y)) = y^c (GiNaC defines y^c as exp(c log y)).
+      ex arg = GiNaC::expand(m.op(0));
+      ex terms = GiNaC::is_a<GiNaC::add>(arg) ? arg : GiNaC::lst{arg};
+      ex prod = 1;
+      for (std::size_t i = 0; i < terms.nops(); ++i) {
+        const ex& t = terms.op(i);
+        if (is_fn(t, "log")) {
+          prod *= t.op(0);
+        } else if (GiNaC::is_a<GiNaC::mul>(t) && t.nops() == 2 && GiNaC::is_a<numeric>(t.op(1)) &&
+                   is_fn(t.op(0), "log")) {
+          prod *= GiNaC::pow(t.op(0).op(0), t.op(1));
+        } else if (GiNaC::is_a<GiNaC::mul>(t) && t.nops() == 2 && GiNaC::is_a<numeric>(t.op(0)) &&
+                   is_fn(t.op(1), "log")) {
+          prod *= GiNaC::pow(t.op(1).op(0), t.op(0));
+        } else {
+          prod *= GiNaC::exp(t);
+        }
+      }
+      return prod;
+    }
+    return m;
+  }
+};
+
+bool has_function_or_root(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e)) return true;
+  if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_function_or_root(e.op(i))) return true;
+  return false;
+}
+
+bool has_trig(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    std::string n = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (n == "sin" || n == "cos" || n == "tan" || n == "sinh" || n == "cosh" || n == "tanh") return true;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_trig(e.op(i))) return true;
+  return false;
+}
+
+// sin^2 = 1 - cos^2, sinh^2 = cosh^2 - 1, tan = sin/cos, tanh = sinh/cosh.
+ex apply_side_relations(const ex& e) {
+  ex w = GiNaC::wild(0);
+  ex s = e.subs(GiNaC::lst{GiNaC::tan(w) == GiNaC::sin(w) / GiNaC::cos(w),
+                           GiNaC::tanh(w) == GiNaC::sinh(w) / GiNaC::cosh(w)});
+  s = GiNaC::expand(s);
+  s = s.subs(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2), GiNaC::subs_options::algebraic);
+  s = s.subs(GiNaC::pow(GiNaC::sinh(w), 2) == GiNaC::pow(GiNaC::cosh(w), 2) - 1, GiNaC::subs_options::algebraic);
+  return GiNaC::normal(GiNaC::expand(s));
+}
+
+// ------------------------------------------------------------------ stage 4: numeric probe
+
+numeric pow10(long k) { return GiNaC::pow(numeric(10), numeric(k)); }
+
+struct PointOutcome {
+  enum Kind { Agree, Disagree, Reject } kind = Reject;
+  numeric a, b;
+  numeric rel;         // relative difference (for reports)
+  long digits = 0;     // precision of the deciding evaluation
+  std::string why;     // for Reject
+};
+
+// Compare the two sides (already substituted) at the working precision D; a difference that
+// is not within tolerance is re-evaluated at 2D (and 4D): a genuine difference stays put as
+// precision rises, rounding noise shrinks by ~10^-D. Only a stable difference refutes.
+PointOutcome compare_sides(const ex& l, const ex& r, long D, const numeric& tol) {
+  PointOutcome out;
+  auto eval2 = [&](long digits, numeric& a, numeric& b, bool& exact) -> bool {
+    d::RealValue va = d::eval_real(l, digits);
+    if (!va.ok) {
+      out.why = va.why;
+      return false;
+    }
+    d::RealValue vb = d::eval_real(r, digits);
+    if (!vb.ok) {
+      out.why = vb.why;
+      return false;
+    }
+    a = va.value;
+    b = vb.value;
+    exact = va.exact && vb.exact;
+    return true;
+  };
+  auto rel_of = [](const numeric& a, const numeric& b, numeric& diff) {
+    diff = GiNaC::abs(a - b);
+    numeric scale = std::max(GiNaC::abs(a), GiNaC::abs(b));
+    if (scale.is_zero()) return numeric(0);
+    return diff / scale;
+  };
+  numeric a, b, diff;
+  bool exact = false;
+  if (!eval2(D, a, b, exact)) return out;
+  out.a = a;
+  out.b = b;
+  out.digits = D;
+  if (exact) {  // both sides exact rationals: decided exactly
+    numeric dd;
+    out.rel = rel_of(a, b, dd);
+    out.kind = (a == b) ? PointOutcome::Agree : PointOutcome::Disagree;
+    return out;
+  }
+  numeric rel = rel_of(a, b, diff);
+  out.rel = rel;
+  if (rel <= tol) {
+    out.kind = PointOutcome::Agree;
+    return out;
+  }
+  numeric a2, b2, diff2;
+  if (!eval2(2 * D, a2, b2, exact)) {
+    out.why = "unstable evaluation: " + out.why;
+    return out;
+  }
+  numeric rel2 = rel_of(a2, b2, diff2);
+  out.a = a2;
+  out.b = b2;
+  out.digits = 2 * D;
+  out.rel = rel2;
+  if (rel2 <= tol) {
+    out.kind = PointOutcome::Agree;
+    return out;
+  }
+  if (diff2 >= diff / 2 && diff2 <= diff * 2) {
+    out.kind = PointOutcome::Disagree;
+    return out;
+  }
+  if (diff2 <= diff * pow10(-D / 2)) {
+    // looks like rounding noise around an exact zero difference: one more doubling
+    numeric a4, b4, diff4;
+    if (!eval2(4 * D, a4, b4, exact)) {
+      out.why = "unstable evaluation: " + out.why;
+      return out;
+    }
+    numeric rel4 = rel_of(a4, b4, diff4);
+    if (diff4 <= diff2 * pow10(-D) || rel4 <= tol) {
+      out.kind = PointOutcome::Agree;
+      numeric scale = std::max(GiNaC::abs(a), GiNaC::abs(b));
+      out.rel = scale.is_zero() ? numeric(0) : diff4 / scale;
+      out.digits = 4 * D;
+      return out;
+    }
+    if (diff4 >= diff2 / 2 && diff4 <= diff2 * 2) {
+      out.a = a4;
+      out.b = b4;
+      out.rel = rel4;
+      out.digits = 4 * D;
+      out.kind = PointOutcome::Disagree;
+      return out;
+    }
+  }
+  out.why = "unstable evaluation (the difference changes erratically with precision)";
+  return out;
+}
+
+double to_double_safe(const numeric& x) {
+  if (x.is_zero()) return 0;
+  if (x < numeric(1, 1) * pow10(-300)) return 1e-300;
+  return x.to_double();
+}
+
+// Both sides' values with 20 significant digits, or more when 20 cannot show the difference
+// (exp(pi*sqrt(163)) and 640320^3 + 744 agree to 30 digits).
+void set_values(Verdict& v, const numeric& a, const numeric& b) {
+  for (int sig = 20; sig <= 120; sig += 5) {
+    v.lhs_value = d::format_number(a, sig);
+    v.rhs_value = d::format_number(b, sig);
+    if (v.lhs_value != v.rhs_value || a == b) break;
+  }
+}
+
+std::string sci(double x) {
+  std::ostringstream os;
+  os.precision(2);
+  os << std::scientific << x;
+  return os.str();
+}
+
+Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
+              const std::string& residual) {
+  Verdict v;
+  v.method = "numeric probe";
+  v.residual = residual;
+  long tol_exp = std::lround(opt.rel_tol_exponent);
+  numeric tol = pow10(tol_exp);
+  // The working precision must resolve the tolerance with room for rounding.
+  long D = std::max<long>(opt.digits, -tol_exp + 15);
+  v.digits = static_cast<int>(D);
+
+  d::PointSampler sampler({lhs, rhs}, ctx);
+  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
+  std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
+
+  if (sampler.symbols().empty() && !abstract) {
+    // A constant claim: one evaluation at D digits, confirmed at 2D.
+    PointOutcome o = compare_sides(lhs, rhs, D, tol);
+    if (o.kind == PointOutcome::Reject) {
+      v.kind = VerdictKind::Undecided;
+      v.reason = "the constant claim cannot be evaluated: " + o.why;
+      v.detail = v.reason;
+      return v;
+    }
+    set_values(v, o.a, o.b);
+    v.max_rel_diff = to_double_safe(o.rel);
+    if (o.kind == PointOutcome::Disagree) {
+      v.kind = VerdictKind::Refuted;
+      v.digits = static_cast<int>(o.digits);
+      v.detail = "the constants differ: lhs = " + v.lhs_value + ", rhs = " + v.rhs_value +
+                 " (relative difference " + sci(v.max_rel_diff) + " at " + std::to_string(o.digits) +
+                 " digits)";
+      return v;
+    }
+    // Confirm at 2D so a near-miss below the D-digit tolerance cannot pass unnoticed.
+    PointOutcome o2 = compare_sides(lhs, rhs, 2 * D, tol * pow10(-D));
+    if (o2.kind == PointOutcome::Disagree) {
+      v.kind = VerdictKind::Refuted;
+      v.digits = static_cast<int>(o2.digits);
+      set_values(v, o2.a, o2.b);
+      v.max_rel_diff = to_double_safe(o2.rel);
+      v.detail = "the constants differ: lhs = " + v.lhs_value + ", rhs = " + v.rhs_value +
+                 " (relative difference " + sci(v.max_rel_diff) + " at " + std::to_string(o2.digits) +
+                 " digits)";
+      return v;
+    }
+    v.lhs_value = d::format_number(o.a, 20);
+    v.rhs_value = d::format_number(o.b, 20);
+    v.kind = VerdictKind::HoldsNumerically;
+    v.points = 1;
+    v.digits = static_cast<int>(2 * D);
+    v.false_accept =
+        "constant claim: both sides agree to about " + std::to_string(D) +
+        " significant digits (evaluated at " + std::to_string(D) + " and " + std::to_string(2 * D) +
+        " digits); only a false identity closer than that could pass";
+    v.detail = "constants agree at " + std::to_string(2 * D) + " digits: " + v.lhs_value;
+    return v;
+  }
+
+  d::Rng rng(opt.seed);
+  const int need = std::max(1, opt.probe_points);
+  const int max_attempts = std::max(100, need * 40);
+  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, nonreal = 0, unstable = 0;
+  numeric max_rel = 0;
+  for (; attempts < max_attempts && agreed < need; ++attempts) {
+    bool wide = attempts >= need * 10;  // widen magnitudes when narrow draws keep failing
+    bool admissible = false;
+    GiNaC::exmap p = sampler.draw(rng, wide, &admissible);
+    if (!admissible) {
+      ++excluded;
+      continue;
+    }
+    ex l, r;
+    try {
+      l = lhs.subs(p, GiNaC::subs_options::no_pattern);
+      r = rhs.subs(p, GiNaC::subs_options::no_pattern);
+      if (abstract) {
+        std::uint64_t s = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
+        l = d::replace_abstract(l, s);
+        r = d::replace_abstract(r, s);
+      }
+    } catch (const std::exception&) {
+      ++undefined;
+      continue;
+    }
+    PointOutcome o = compare_sides(l, r, D, tol);
+    if (o.kind == PointOutcome::Agree) {
+      ++agreed;
+      if (o.rel > max_rel) max_rel = o.rel;
+      continue;
+    }
+    if (o.kind == PointOutcome::Reject) {
+      if (o.why.find("unstable") != std::string::npos) ++unstable;
+      else if (o.why.find("not real") != std::string::npos) ++nonreal;
+      else ++undefined;
+      continue;
+    }
+    v.kind = VerdictKind::Refuted;
+    v.points = agreed;
+    v.digits = static_cast<int>(o.digits);
+    v.point = sampler.describe(p);
+    set_values(v, o.a, o.b);
+    v.max_rel_diff = to_double_safe(o.rel);
+    v.detail = "differs at " + (v.point.empty() ? std::string("an abstract-function sample") : d::join_point(v.point)) +
+               ": lhs = " + v.lhs_value + ", rhs = " + v.rhs_value;
+    if (abstract) v.detail += " (abstract function values drawn at random)";
+    return v;
+  }
+  if (agreed >= need) {
+    v.kind = VerdictKind::HoldsNumerically;
+    v.points = agreed;
+    v.max_rel_diff = to_double_safe(max_rel);
+    // False-accept bound (stated, heuristic for transcendental differences): each symbol is
+    // drawn from roughly 1e9 distinct rationals (random denominator ~1e5, magnitude spread over
+    // 4 decades). A nonzero polynomial/rational difference of degree <= 1000 vanishes on at most
+    // 1000 values per line through the sample box (Schwartz-Zippel), i.e. on < 1e-6 of the
+    // draws; an analytic difference that is not identically zero behaves the same way away from
+    // its (measure-zero) zero set, and agreeing to 1e-30 relative instead of exactly only widens
+    // that set by ~1e-30. Independent points multiply: < 1e-(6k). Not covered: claims whose
+    // difference is below the tolerance everywhere, or built to vanish on this sample grid.
+    std::ostringstream fa;
+    fa << "< 1e-6 per point, < 1e-" << 6 * agreed << " for all " << agreed
+       << " points (Schwartz-Zippel-type count: a nonzero difference of degree <= 1000 vanishes on"
+          " < 1e-6 of ~1e9 sampled values per symbol; heuristic for transcendental differences;"
+          " differences below 1e"
+       << tol_exp << " relative are not detected)";
+    v.false_accept = fa.str();
+    v.detail = std::to_string(agreed) + " random points agree to 1e" + std::to_string(tol_exp) +
+               " relative at " + std::to_string(D) + " digits (max relative difference " +
+               sci(v.max_rel_diff) + ")";
+    if (abstract) v.detail += "; abstract functions replaced by independent random values";
+    return v;
+  }
+  v.kind = VerdictKind::Undecided;
+  v.points = agreed;
+  std::ostringstream why;
+  if (agreed == 0 && excluded == attempts)
+    why << "no valid sample points: the constraints exclude every point tried (" << attempts << ")";
+  else
+    why << "only " << agreed << " of " << need << " sample points were usable (" << attempts
+        << " tried: " << excluded << " outside the assumptions, " << undefined << " undefined, "
+        << nonreal << " not real, " << unstable << " unstable)";
+  v.reason = why.str();
+  v.detail = v.reason;
+  return v;
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ the cascade
+
+Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  Verdict v;
+  ex diff = lhs - rhs;
+  double est = estimate_expanded_terms(lhs) + estimate_expanded_terms(rhs);
+  if (est > static_cast<double>(opt.max_terms)) {
+    v.kind = VerdictKind::Undecided;
+    v.method = "normal";
+    std::ostringstream os;
+    os << "resource limit: expansion would exceed " << sci(static_cast<double>(opt.max_terms))
+       << " terms (estimated " << sci(est) << ")";
+    v.reason = os.str();
+    v.detail = v.reason;
+    return v;
+  }
+  std::string residual;
+  std::string last_method = "normal";
+  if (opt.symbolic) {
+    try {
+      // 1. exact symbolic
+      ex n = GiNaC::normal(diff);
+      if (n.is_zero()) {
+        v.kind = VerdictKind::Proved;
+        v.method = "normal";
+        v.detail = "normal(lhs - rhs) = 0";
+        return v;
+      }
+      ex current = n;
+      // 2. transcendental rules (log of products/powers of positive factors, exp of sums)
+      if (has_function_or_root(n)) {
+        last_method = "expand (transcendental)";
+        TranscendentalRewrite rw(ctx);
+        ex t = rw(diff);
+        if (estimate_expanded_terms(t) <= static_cast<double>(opt.max_terms)) {
+          t = GiNaC::expand(t, GiNaC::expand_options::expand_transcendental);
+          t = GiNaC::normal(rw(t));
+          if (t.is_zero()) {
+            v.kind = VerdictKind::Proved;
+            v.method = "expand (transcendental)";
+            v.detail = "log/exp rules on positive factors, then normal(lhs - rhs) = 0";
+            return v;
+          }
+          current = t;
+          // 3. side relations
+          if (has_trig(t)) {
+            last_method = "side relations";
+            ex s = apply_side_relations(t);
+            if (s.is_zero()) {
+              v.kind = VerdictKind::Proved;
+              v.method = "side relations";
+              v.detail = "sin^2 = 1 - cos^2 (and tan = sin/cos), then normal(lhs - rhs) = 0";
+              return v;
+            }
+          }
+        }
+      }
+      residual = d::residual_text(current, ctx);
+    } catch (const std::exception& e) {
+      residual = print_text(diff, ctx);
+    }
+  } else {
+    residual = print_text(diff, ctx);
+  }
+  if (opt.numeric) return probe(lhs, rhs, ctx, opt, residual);
+  v.kind = VerdictKind::Undecided;
+  v.method = last_method;
+  v.residual = residual;
+  v.reason = opt.symbolic ? "the symbolic stages leave a nonzero residual and the numeric probe is off"
+                          : "both the symbolic stages and the numeric probe are off";
+  v.detail = v.reason + "; residual: " + residual;
+  return v;
+}
+
+Verdict prove_zero(const ex& e, const SymbolTable& ctx, const ProveOptions& opt) {
+  return prove_equal(e, 0, ctx, opt);
+}
+
+// ------------------------------------------------------------------ side conditions
+
+namespace {
+
+enum class CondKind { Nonzero, Positive, Nonnegative, UnitInterval };
+
+struct RawCond {
+  CondKind kind;
+  ex arg;
+  std::string reason;
+};
+
+void collect_conditions(const ex& e, std::vector<RawCond>& out) {
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out);
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex& b = e.op(0);
+    const ex& x = e.op(1);
+    if (GiNaC::is_a<numeric>(b)) {
+      // constants such as sqrt(2) or 1/2 need nothing
+      return;
+    }
+    if (GiNaC::is_a<numeric>(x)) {
+      const numeric& n = GiNaC::ex_to<numeric>(x);
+      if (n.is_integer()) {
+        if (n.is_negative()) out.push_back({CondKind::Nonzero, b, "divisor"});
+        return;
+      }
+      std::string why = (n.denom() == 2) ? "sqrt argument" : "fractional power base";
+      out.push_back({n.is_negative() ? CondKind::Positive : CondKind::Nonnegative, b,
+                     n.is_negative() ? why + " (divisor)" : why});
+      return;
+    }
+    out.push_back({CondKind::Positive, b, "power base"});
+    return;
+  }
+  if (is_fn(e, "log")) out.push_back({CondKind::Positive, e.op(0), "log argument"});
+  if (is_fn(e, "acos")) out.push_back({CondKind::UnitInterval, e.op(0), "acos argument"});
+  if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
+}
+
+std::string condition_text(CondKind k, const ex& a, const SymbolTable& ctx) {
+  switch (k) {
+    case CondKind::Nonzero: {
+      std::string t = print_text(a, ctx);
+      if (!t.empty() && t[0] == '-') t = print_text(-a, ctx);  // sign is irrelevant for != 0
+      return t + " != 0";
+    }
+    case CondKind::Positive: return print_text(a, ctx) + " > 0";
+    case CondKind::Nonnegative: return print_text(a, ctx) + " >= 0";
+    case CondKind::UnitInterval: return "-1 <= " + print_text(a, ctx) + " <= 1";
+  }
+  return "";
+}
+
+std::string domains_text(const ex& a, const SymbolTable& ctx) {
+  std::string s;
+  for (const auto& sym : d::ordered_symbols(a, ctx)) {
+    if (!s.empty()) s += ", ";
+    s += GiNaC::ex_to<GiNaC::symbol>(sym).get_name() + " " + d::domain_of(sym, ctx).to_string();
+  }
+  return s.empty() ? "a constant" : s;
+}
+
+// Does an assumed constraint give the condition? (arg equals +-(lhs - rhs) of an assumption)
+bool constraint_implies(CondKind k, const ex& a, const Constraint& c) {
+  ex cd = c.lhs - c.rhs;
+  bool same = false, opposite = false;
+  try {
+    same = GiNaC::normal(a - cd).is_zero();
+    opposite = !same && GiNaC::normal(a + cd).is_zero();
+  } catch (const std::exception&) {
+    return false;
+  }
+  if (!same && !opposite) return false;
+  using Op = Constraint::Op;
+  // sign of cd implied by the constraint
+  bool pos = c.op == Op::Gt, neg = c.op == Op::Lt, nonneg = c.op == Op::Ge || c.op == Op::Gt,
+       nonpos = c.op == Op::Le || c.op == Op::Lt, nz = c.op == Op::Ne || pos || neg;
+  if (opposite) {
+    std::swap(pos, neg);
+    std::swap(nonneg, nonpos);
+  }
+  switch (k) {
+    case CondKind::Nonzero: return nz;
+    case CondKind::Positive: return pos;
+    case CondKind::Nonnegative: return nonneg;
+    case CondKind::UnitInterval: return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) {
+  std::vector<RawCond> raw;
+  collect_conditions(e, raw);
+  std::map<std::string, SideCondition> by_text;  // sorted, deduplicated: deterministic order
+  for (const RawCond& rc : raw) {
+    SideCondition sc;
+    sc.what = condition_text(rc.kind, rc.arg, ctx);
+    sc.reason = rc.reason;
+    if (by_text.count(sc.what)) continue;
+    d::Range range = d::range_of(rc.arg, ctx);
+    bool guaranteed = false;
+    switch (rc.kind) {
+      case CondKind::Nonzero: guaranteed = d::provably_nonzero(rc.arg, ctx); break;
+      case CondKind::Positive: guaranteed = d::provably_positive(rc.arg, ctx); break;
+      case CondKind::Nonnegative: guaranteed = range.nonnegative() || d::provably_positive(rc.arg, ctx); break;
+      case CondKind::UnitInterval: guaranteed = range.within(-1, 1); break;
+    }
+    if (guaranteed) {
+      sc.status = SideCondition::Status::Guaranteed;
+      sc.evidence = "follows from the domains: " + domains_text(rc.arg, ctx);
+      by_text[sc.what] = sc;
+      continue;
+    }
+    for (const Constraint& c : ctx.constraints())
+      if (constraint_implies(rc.kind, rc.arg, c)) {
+        sc.status = SideCondition::Status::Guaranteed;
+        sc.evidence = "assumed: " + c.text;
+        guaranteed = true;
+        break;
+      }
+    if (guaranteed) {
+      by_text[sc.what] = sc;
+      continue;
+    }
+    if (d::has_abstract_application(rc.arg)) {
+      sc.status = SideCondition::Status::Unknown;
+      sc.evidence = "depends on an abstract function; not implied by the domains";
+      by_text[sc.what] = sc;
+      continue;
+    }
+    // Look for an admissible point that breaks it.
+    d::PointSampler sampler({rc.arg}, ctx);
+    d::Rng rng(20261121 ^ d::hash_text(sc.what, 7));
+    int tested = 0;
+    bool violated = false;
+    for (int attempt = 0; attempt < 60 && tested < 16 && !violated; ++attempt) {
+      bool adm = false;
+      GiNaC::exmap p = sampler.draw(rng, attempt >= 30, &adm);
+      if (!adm) continue;
+      ex val;
+      try {
+        val = rc.arg.subs(p, GiNaC::subs_options::no_pattern);
+      } catch (const std::exception&) {
+        continue;  // the argument itself is undefined here: another condition reports it
+      }
+      d::RealValue rv = d::eval_real(val, 30);
+      ++tested;
+      bool bad = false;
+      std::string value_text = rv.ok ? d::format_number(rv.value, 20) : "not real";
+      switch (rc.kind) {
+        case CondKind::Nonzero: bad = rv.ok && rv.exact && rv.value.is_zero(); break;
+        case CondKind::Positive: bad = !rv.ok || !rv.value.is_positive(); break;
+        case CondKind::Nonnegative: bad = !rv.ok || rv.value.is_negative(); break;
+        case CondKind::UnitInterval: bad = !rv.ok || GiNaC::abs(rv.value) > 1; break;
+      }
+      if (bad) {
+        violated = true;
+        sc.status = SideCondition::Status::Violated;
+        sc.evidence = "fails at " + d::join_point(sampler.describe(p)) + " (value " + value_text + ")";
+      }
+    }
+    if (!violated) {
+      sc.status = SideCondition::Status::Unknown;
+      sc.evidence = "not implied by the domains (" + domains_text(rc.arg, ctx) + "); held at " +
+                    std::to_string(tested) + " sampled points";
+    }
+    by_text[sc.what] = sc;
+  }
+  std::vector<SideCondition> out;
+  for (auto& [k, sc] : by_text) out.push_back(sc);
+  return out;
+}
+
+// ------------------------------------------------------------------ satisfiability
+
+std::string check_satisfiable(const SymbolTable& ctx, std::uint64_t seed) {
+  for (const auto& s : ctx.all())
+    if (s.domain.empty()) return "the domain '" + s.domain.to_string() + "' of '" + s.name + "' is empty";
+  const auto& cons = ctx.constraints();
+  if (cons.empty()) return "";
+  std::vector<ex> exprs;
+  for (const auto& c : cons) exprs.push_back(c.lhs - c.rhs);
+  d::PointSampler sampler(exprs, ctx);
+  d::Rng rng(seed);
+  std::vector<int> held(cons.size(), 0);
+  const int tries = 2000;
+  for (int i = 0; i < tries; ++i) {
+    bool adm = false;
+    GiNaC::exmap p = sampler.draw(rng, i % 2 == 1, &adm);
+    if (adm) return "";
+    for (std::size_t j = 0; j < cons.size(); ++j)
+      if (cons[j].holds_at(p)) ++held[j];
+  }
+  std::string never, all;
+  for (std::size_t j = 0; j < cons.size(); ++j) {
+    std::string t = "'" + cons[j].text + "'";
+    all += (all.empty() ? "" : ", ") + t;
+    if (held[j] == 0) never += (never.empty() ? "" : ", ") + t;
+  }
+  if (!never.empty())
+    return "the assumption(s) " + never + " never hold on the declared domains (" +
+           std::to_string(tries) + " random points tried)";
+  return "the assumptions " + all + " cannot all hold together: each holds somewhere, but none of " +
+         std::to_string(tries) + " random points from the declared domains satisfies them all";
+}
+
+}  // namespace dc
