@@ -1,0 +1,275 @@
+// to_ginac (exactness, symbols, functions, calculus forms, resource limits) and dimension_of.
+#include <catch2/catch.hpp>
+
+#include <chrono>
+#include <string>
+
+#include "derivations/core/expr.hpp"
+#include "derivations/core/functions.hpp"
+#include "derivations/core/symbols.hpp"
+#include "derivations/core/units.hpp"
+
+using namespace dc;
+using GiNaC::ex;
+using GiNaC::numeric;
+
+namespace {
+
+const SourcePos kAt{"t.dc", 1, 1};
+
+Dimension unit(const std::string& s) { return parse_dimension(parse_expression(s, kAt)); }
+
+void declare(SymbolTable& t, const std::string& name, Domain d, const std::string& u,
+             std::vector<std::string> params = {}) {
+  SymbolInfo info;
+  info.name = name;
+  info.domain = d;
+  if (!u.empty()) {
+    info.dimension = unit(u);
+    info.has_dimension = true;
+  }
+  info.is_function = !params.empty();
+  info.params = std::move(params);
+  info.pos = SourcePos{"t.dc", 1, 1};
+  t.declare(std::move(info));
+}
+
+const SymbolTable& table() {
+  static const SymbolTable t = [] {
+    SymbolTable s;
+    declare(s, "m1", Domain::positive(), "kg");
+    declare(s, "m2", Domain::positive(), "kg");
+    declare(s, "v1", Domain::real(), "m/s");
+    declare(s, "v2", Domain::real(), "m/s");
+    declare(s, "g", Domain::positive(), "m/s^2");
+    declare(s, "x", Domain::nonnegative(), "m");
+    declare(s, "t", Domain::nonnegative(), "s");
+    declare(s, "t1", Domain::positive(), "s");
+    declare(s, "e", Domain::interval(0, false, 1, false), "1");
+    declare(s, "k", Domain::real(), "");  // no declared dimension
+    declare(s, "v", Domain::real(), "m/s", {"t"});
+    declare(s, "m_r", Domain::positive(), "kg", {"t"});
+    return s;
+  }();
+  return t;
+}
+
+ex conv(const std::string& s) { return to_ginac(parse_expression(s, kAt), table()); }
+ex sym(const std::string& name) { return table().find(name)->sym; }
+Dimension dim(const std::string& s) { return dimension_of(parse_expression(s, kAt), table()); }
+
+InputError conv_error(const std::string& s) {
+  try {
+    conv(s);
+  } catch (const InputError& e) {
+    return e;
+  }
+  FAIL("no error for " << s);
+  throw std::logic_error("unreachable");
+}
+
+InputError dim_error(const std::string& s) {
+  try {
+    dim(s);
+  } catch (const InputError& e) {
+    return e;
+  }
+  FAIL("no dimension error for " << s);
+  throw std::logic_error("unreachable");
+}
+
+bool same(const ex& a, const ex& b) { return GiNaC::normal(a - b).is_zero(); }
+
+}  // namespace
+
+TEST_CASE("to_ginac: numbers are exact rationals, never doubles", "[to_ginac]") {
+  CHECK(conv("0.5").is_equal(numeric(1, 2)));
+  CHECK(conv("1/2").is_equal(numeric(1, 2)));  // not integer division
+  CHECK_FALSE(conv("1/2").is_zero());
+  CHECK(conv("2.50").is_equal(numeric(5, 2)));
+  CHECK(conv("007").is_equal(numeric(7)));
+  CHECK(conv("0.1 + 0.2").is_equal(numeric(3, 10)));  // 0.30000000000000004 as doubles
+  CHECK(conv("0.25*m1").is_equal(sym("m1") / 4));
+  const std::string big = "123456789012345678901234567890123456789";
+  ex b = conv(big);
+  REQUIRE(GiNaC::is_a<numeric>(b));
+  CHECK(GiNaC::ex_to<numeric>(b).is_integer());
+  CHECK((b - numeric(big.c_str())).is_zero());
+  CHECK(conv("0." + std::string(398, '0') + "1").is_equal(numeric(1) / numeric(10).power(399)));
+  CHECK(conv("pi/2").is_equal(GiNaC::Pi / 2));
+}
+
+TEST_CASE("to_ginac: formulas use the table's symbols", "[to_ginac]") {
+  ex m1 = sym("m1"), m2 = sym("m2"), v1 = sym("v1"), v2 = sym("v2"), e = sym("e");
+  ex got = conv("(m1*v1 + m2*v2 - e*m2*(v1 - v2))/(m1 + m2)");
+  CHECK(same(got, (m1 * v1 + m2 * v2 - e * m2 * (v1 - v2)) / (m1 + m2)));
+  CHECK(same(conv("-m1^2"), -GiNaC::pow(m1, 2)));
+  CHECK(same(conv("2^3^2"), numeric(512)));
+}
+
+TEST_CASE("to_ginac: built-in functions and long chains", "[to_ginac]") {
+  ex x = sym("x"), g = sym("g");
+  CHECK(same(conv("sqrt(2*g*x)^2"), 2 * g * x));
+  CHECK(same(conv("ln(x) - log(x)"), 0));
+  ex pyth = conv("sin(x)^2 + cos(x)^2 - 1").subs(x == numeric(1, 3)).evalf();
+  REQUIRE(GiNaC::is_a<numeric>(pyth));
+  CHECK(GiNaC::abs(GiNaC::ex_to<numeric>(pyth)) < numeric(1, 1000000000));
+  CHECK(conv("abs(-3)").is_equal(3));
+  CHECK(conv("acos(1)").is_zero());
+  CHECK(conv("atan(1)").is_equal(GiNaC::Pi / 4));
+  std::string chain = "x";
+  for (int i = 0; i < 4000; ++i) chain += " + x";
+  CHECK(same(conv(chain), 4001 * x));
+  std::string quot = "x";
+  for (int i = 0; i < 2000; ++i) quot += "/x*x";
+  CHECK(same(conv(quot), x));
+}
+
+TEST_CASE("to_ginac: undefined symbols and misuse are positioned errors", "[to_ginac][errors]") {
+  InputError u = conv_error("(v_e + g*t)/u_e");
+  CHECK(u.pos().col == 2);
+  CHECK(u.length() == 3);
+  CHECK(u.message() ==
+        "undefined symbol 'v_e': declare it with 'symbol v_e : DOMAIN [UNIT]' or define it in an earlier step");
+  CHECK(conv_error("v + 1").message() == "'v' is a function of t; write v(t)");
+  CHECK(conv_error("x + m1(t)").message() == "'m1' is a symbol, not a function; write m1*(...) for a product");
+  CHECK(conv_error("x + m1(t)").pos().col == 5);
+  CHECK_THAT(conv_error("foo(x)").message(), Catch::StartsWith("unknown function 'foo': built-in functions are sqrt"));
+  CHECK(conv_error("1/oo").message() == "'oo' (infinity) may only appear as the point of limit(f, x, oo)");
+  CHECK(conv_error("1/oo").pos().col == 3);
+  CHECK(conv_error("x + integral(v(t), t, 0, t1)").message() ==
+        "integral(...) can only appear in a step checked by 'integrate'");
+  CHECK(conv_error("x + integral(v(t), t, 0, t1)").pos().col == 5);
+}
+
+TEST_CASE("to_ginac: wrong argument counts name the function and the expected count", "[to_ginac][errors]") {
+  CHECK(conv_error("sqrt(x, t)").message() == "sqrt(...) takes 1 argument, got 2");
+  CHECK(conv_error("diff(x)").message() == "diff(...) takes 2 or 3 arguments: diff(f, x) or diff(f, x, n), got 1");
+  CHECK(conv_error("limit(x, t)").message() == "limit(...) takes 3 arguments: limit(f, x, point), got 2");
+  CHECK(conv_error("1 + v(t, x)").message() == "v(...) takes 1 argument (t), got 2");
+  CHECK(conv_error("1 + v(t, x)").pos().col == 5);
+  CHECK(conv_error("diff(x, 2*t)").message() == "the second argument of diff(...) must be a declared symbol, found '2*t'");
+  CHECK(conv_error("diff(x, t, 0)").message() == "derivative order 0 is out of range (1 to 100)");
+  CHECK(conv_error("diff(x, t, 1000000)").pos().col == 12);
+}
+
+TEST_CASE("to_ginac: declared functions and diff", "[to_ginac][functions]") {
+  ex t = sym("t"), x = sym("x");
+  ex vt = conv("v(t)");
+  CHECK(pool_function_index(vt) == table().function_index("v"));
+  CHECK(pool_derivative_order(vt) == 0);
+  const SymbolInfo* info = declared_function_of(vt, table());
+  REQUIRE(info);
+  CHECK(info->name == "v");
+  ex v0 = conv("v(0)");  // stays unevaluated
+  CHECK(declared_function_of(v0, table())->name == "v");
+  CHECK_FALSE(v0.is_equal(vt));
+
+  ex dv = conv("diff(v(t), t)");
+  CHECK(pool_function_index(dv) == table().function_index("v"));
+  CHECK(pool_derivative_order(dv) == 1);
+  CHECK(GiNaC::is_a<GiNaC::fderivative>(dv));
+  CHECK(pool_derivative_order(conv("diff(v(t), t, 2)")) == 2);
+  // d(m v)/dt = m' v + m v' (the product rule on abstract functions).
+  ex prod = conv("diff(m_r(t)*v(t), t) - diff(m_r(t), t)*v(t) - m_r(t)*diff(v(t), t)");
+  CHECK(GiNaC::expand(prod).is_zero());
+  CHECK(same(conv("diff(x^3, x)"), 3 * GiNaC::pow(x, 2)));
+  CHECK(same(conv("diff(x^3, x, 2)"), 6 * x));
+  CHECK(declared_function_of(conv("m_r(t)"), table())->name == "m_r");
+  CHECK(pool_function_index(conv("x")) == -1);
+  CHECK(pool_function_index(conv("sin(x)")) == -1);
+  CHECK(declared_function_of(apply_pool_function(kFunctionPoolSize - 1, x), table()) == nullptr);
+  CHECK_THROWS_AS(apply_pool_function(kFunctionPoolSize, x), std::out_of_range);
+}
+
+TEST_CASE("to_ginac: limits", "[to_ginac][limit]") {
+  ex v1 = sym("v1"), m1 = sym("m1");
+  // Example 9.4: m2 -> oo with v2 = 0 gives v1' = -v1 for e = 1.
+  CHECK(same(conv("limit(((m1 - m2)*v1)/(m1 + m2), m2, oo)"), -v1));
+  CHECK(same(conv("limit(m1*x/(m1 + x), x, 0)"), 0));
+  CHECK_THROWS_AS(conv("limit(sin(1/x), x, 0)"), UndecidedLimit);
+  CHECK(conv_error("limit(x, x, x + 1)").message() == "the limit point must not contain the variable 'x'");
+}
+
+TEST_CASE("to_ginac: runaway powers are refused at the exponent, quickly", "[to_ginac][limits]") {
+  auto t0 = std::chrono::steady_clock::now();
+  InputError a = conv_error("2^(10^10)");
+  CHECK(a.pos().col == 3);
+  CHECK_THAT(a.message(), Catch::StartsWith("exponent 10000000000 is too large: the result would have about"));
+  CHECK_THAT(a.message(), Catch::EndsWith("digits (limit 10000)"));
+  InputError b = conv_error("(m1 + m2)^100000");
+  CHECK(b.pos().col == 11);
+  CHECK(b.message() == "exponent 100000 is too large (limit 1000)");
+  InputError c = conv_error("2^(10^(10^10))");
+  CHECK(c.pos().col == 7);  // the inner power already fails
+  CHECK(conv_error("x^(10001/2)").message() == "exponent 10001/2 is too large (limit 1000)");
+  CHECK(conv_error("pi^(-1001)").message() == "exponent -1001 is too large (limit 1000)");
+  CHECK(conv_error("10^12000").pos().col == 4);
+  auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  INFO("six runaway powers refused in " << ms << " ms");
+
+  // Within the limits: exact results.
+  CHECK(GiNaC::ex_to<numeric>(conv("10^9999")).is_integer());
+  CHECK(conv("2^-10").is_equal(numeric(1, 1024)));
+  CHECK(conv("1^(10^10)").is_equal(1));
+  CHECK(conv("(-1)^(10^10 + 1)").is_equal(-1));
+  CHECK_NOTHROW(conv("(m1 + m2)^1000"));
+  CHECK(same(conv("4^(1/2)"), 2));
+}
+
+TEST_CASE("to_ginac: division by zero and poles are positioned errors", "[to_ginac][errors]") {
+  InputError d = conv_error("x + 1/0");
+  CHECK(d.pos().col == 6);
+  CHECK(d.message() == "division by zero: '0' is 0");
+  CHECK(conv_error("x/(m1 - m1)").message() == "division by zero: '(m1 - m1)' is 0");
+  InputError z = conv_error("0^(-1)");
+  CHECK(z.pos().col == 1);
+  CHECK_THAT(z.message(), Catch::Contains("division by zero"));
+  InputError l = conv_error("1 + log(0)");
+  CHECK(l.pos().col == 5);
+  CHECK(l.message() == "'log(0)' is undefined (a pole)");
+}
+
+TEST_CASE("dimension_of: consistent formulas", "[dimension]") {
+  CHECK(dim("sqrt(2*g*x)") == unit("m/s"));  // Example 9.7
+  CHECK(dim("m1*v1 + m2*v2") == unit("kg*m/s"));
+  CHECK(dim("(m1*v1 + m2*v2 - e*m2*(v1 - v2))/(m1 + m2)") == unit("m/s"));
+  CHECK(dim("m1*v1^2/2") == unit("J"));
+  CHECK(dim("-x^2") == unit("m^2"));
+  CHECK(dim("x^(1/2)").to_string() == "m^(1/2)");
+  CHECK(dim("(x*x)^0.5") == unit("m"));
+  CHECK(dim("x^-1") == unit("1/m"));
+  CHECK(dim("(m1/m2)^e").dimensionless());
+  CHECK(dim("log(m1/m2) + exp(-g*t/v1) + acos(1 - 2*e^2) + pi").dimensionless());
+  CHECK(dim("abs(v1 - v2)") == unit("m/s"));
+  CHECK(dim("diff(v(t), t)") == unit("m/s^2"));
+  CHECK(dim("diff(x, t, 2)") == unit("m/s^2"));
+  CHECK(dim("v(0) + v(t1)") == unit("m/s"));
+  CHECK(dim("limit(m1*v1/(m1 + m2), m2, oo)") == unit("m/s"));
+  CHECK(dim("integral(v(t), t, 0, t1)") == unit("m"));
+  CHECK(dim("v1 + 0") == unit("m/s"));
+  CHECK(dim("0 - v1") == unit("m/s"));
+  CHECK(dim("k*x") == unit("m"));  // no declared dimension: dimensionless
+}
+
+TEST_CASE("dimension_of: mismatches are reported at the operator with both dimensions", "[dimension][errors]") {
+  InputError a = dim_error("m1*v1 + m1*v1^2");
+  CHECK(a.message() == "cannot add kg·m/s and kg·m²/s²");
+  CHECK(a.pos().col == 7);
+  InputError s = dim_error("m1*v1 - m1*v1^2");
+  CHECK(s.message() == "cannot subtract kg·m²/s² from kg·m/s");
+  InputError l = dim_error("1 + log(m1)");
+  CHECK(l.message() == "argument of log must be dimensionless, got kg");
+  CHECK(l.pos().col == 9);
+  CHECK(dim_error("sin(g*t)").message() == "argument of sin must be dimensionless, got m/s");
+  CHECK(dim_error("x^t").message() == "an exponent must be dimensionless, got s");
+  CHECK(dim_error("x^e").message() == "the exponent of a quantity with dimension m must be a constant number, found 'e'");
+  CHECK(dim_error("x^(1/3)").message() == "m raised to 1/3 is not a dimension (exponents must be multiples of 1/2)");
+  CHECK(dim_error("sqrt(sqrt(x))").message() ==
+        "the square root of m^(1/2) is not a dimension (exponents must be multiples of 1/2)");
+  CHECK(dim_error("v(x)").message() == "the argument of v (t) must have dimension s, got m");
+  CHECK(dim_error("limit(v1, m2, x)").message() == "the limit point of m2 must have dimension kg, got m");
+  InputError u = dim_error("x + v_e");
+  CHECK(u.pos().col == 5);
+  CHECK_THAT(u.message(), Catch::StartsWith("undefined symbol 'v_e'"));
+}
