@@ -42,10 +42,15 @@ std::string InputError::format() const {
       if (c == '\t') c = ' ';
     out += "    " + shown + "\n";
     std::size_t caret = std::min(col - from, shown.size());
+    // Columns count bytes; the caret line counts characters, so multi-byte UTF-8 characters
+    // (μ, θ, ·) before the caret take one space each.
+    std::size_t caret_chars = 0;
+    for (std::size_t i = 0; i < caret; ++i)
+      if ((static_cast<unsigned char>(shown[i]) & 0xC0) != 0x80) ++caret_chars;
     int len = std::max(1, std::min<int>(length_, static_cast<int>(shown.size() - std::min(caret, shown.size())) > 0
                                                       ? static_cast<int>(shown.size() - caret)
                                                       : 1));
-    out += "    " + std::string(caret, ' ') + "^" + std::string(static_cast<std::size_t>(len - 1), '~') + "\n";
+    out += "    " + std::string(caret_chars, ' ') + "^" + std::string(static_cast<std::size_t>(len - 1), '~') + "\n";
   }
   return out;
 }
