@@ -612,8 +612,11 @@ void collect_conditions(const ex& e, std::vector<RawCond>& out) {
 std::string condition_text(CondKind k, const ex& a, const SymbolTable& ctx) {
   switch (k) {
     case CondKind::Nonzero: {
-      std::string t = print_text(a, ctx);
-      if (!t.empty() && t[0] == '-') t = print_text(-a, ctx);  // sign is irrelevant for != 0
+      // The sign is irrelevant for != 0, and GiNaC stores 1/(v1 - v2) as -1/(v2 - v1) in some
+      // processes: print both signs and keep the one without a leading '-', then the smaller.
+      std::string t1 = print_text(a, ctx), t2 = print_text(-a, ctx);
+      bool n1 = !t1.empty() && t1[0] == '-', n2 = !t2.empty() && t2[0] == '-';
+      std::string t = (n1 != n2) ? (n1 ? t2 : t1) : std::min(t1, t2);
       return t + " != 0";
     }
     case CondKind::Positive: return print_text(a, ctx) + " > 0";

@@ -1,0 +1,117 @@
+// compute_limit, first_order, series_first_order.
+#include <catch2/catch.hpp>
+
+#include "derivations/core/limit.hpp"
+#include "derivations/core/prove.hpp"
+#include "support.hpp"
+
+using namespace dc;
+using GiNaC::ex;
+
+namespace {
+
+struct Fixture {
+  test::Table T;
+  Fixture() {
+    T.add("m1", Domain::positive())
+        .add("m2", Domain::positive())
+        .add("v1", Domain::real())
+        .add("v0", Domain::negative())
+        .add("mu", Domain::nonnegative())
+        .add("e2", test::unit_interval())
+        .add("e12", test::unit_interval())
+        .add("x", Domain::real());
+  }
+  bool equal(const ex& a, const ex& b) { return prove_equal(a, b, T.t).kind == VerdictKind::Proved; }
+};
+
+}  // namespace
+
+TEST_CASE("limit: the wall, m2 -> oo", "[limit]") {
+  Fixture F;
+  ex m1 = F.T["m1"], m2 = F.T["m2"], v1 = F.T["v1"];
+  LimitResult r = compute_limit((m1 - m2) * v1 / (m1 + m2), F.T.sym("m2"), 0, +1, F.T.t);
+  CAPTURE(r.reason);
+  REQUIRE(r.ok);
+  REQUIRE(r.infinite == 0);
+  REQUIRE(F.equal(r.value, -v1));
+  REQUIRE(r.method == "series at 0 of eps = 1/x");
+  REQUIRE(r.confirmed_numerically);
+  LimitResult r2 = compute_limit(2 * m1 * v1 / (m1 + m2), F.T.sym("m2"), 0, +1, F.T.t);
+  REQUIRE(r2.ok);
+  REQUIRE(r2.value.is_zero());
+  REQUIRE(r2.confirmed_numerically);
+}
+
+TEST_CASE("limit: the two-ball forms as mu -> 0", "[limit]") {
+  Fixture F;
+  ex mu = F.T["mu"], e2 = F.T["e2"], e12 = F.T["e12"], v0 = F.T["v0"];
+  ex f = (mu - e2 - e12 * (1 + e2)) / (mu + 1) * v0;
+  LimitResult r = compute_limit(f, F.T.sym("mu"), 0, 0, F.T.t);
+  CAPTURE(r.reason);
+  REQUIRE(r.ok);
+  REQUIRE(F.equal(r.value, -(e2 + (1 + e2) * e12) * v0));
+  REQUIRE(r.confirmed_numerically);
+  // a form that needs the series: mu/mu
+  LimitResult s = compute_limit((GiNaC::pow(mu, 2) + mu * v0) / mu, F.T.sym("mu"), 0, 0, F.T.t);
+  CAPTURE(s.reason);
+  REQUIRE(s.ok);
+  REQUIRE(s.method == "series");
+  REQUIRE(F.equal(s.value, v0));
+}
+
+TEST_CASE("limit: sin(x)/x at 0, infinities, and undecidable forms", "[limit]") {
+  Fixture F;
+  ex x = F.T["x"];
+  const auto& xs = F.T.sym("x");
+  LimitResult r = compute_limit(GiNaC::sin(x) / x, xs, 0, 0, F.T.t);
+  REQUIRE(r.ok);
+  REQUIRE(r.value.is_equal(1));
+  REQUIRE(r.confirmed_numerically);
+
+  LimitResult inf = compute_limit(1 / (x * x), xs, 0, 0, F.T.t);
+  REQUIRE(inf.ok);
+  REQUIRE(inf.infinite == 1);
+  LimitResult at_oo = compute_limit(-x, xs, 0, +1, F.T.t);
+  REQUIRE(at_oo.ok);
+  REQUIRE(at_oo.infinite == -1);
+  LimitResult pole = compute_limit(1 / x, xs, 0, 0, F.T.t);
+  REQUIRE_FALSE(pole.ok);
+  REQUIRE(pole.reason.find("odd order") != std::string::npos);
+
+  LimitResult puiseux = compute_limit((GiNaC::sqrt(1 + x) - 1) / GiNaC::sqrt(x), xs, 0, 0, F.T.t);
+  CAPTURE(puiseux.reason);
+  REQUIRE_FALSE(puiseux.ok);
+  REQUIRE(!puiseux.reason.empty());
+  LimitResult essential = compute_limit(GiNaC::exp(-1 / x), xs, 0, 0, F.T.t);
+  CAPTURE(essential.reason);
+  REQUIRE_FALSE(essential.ok);
+  LimitResult xlogx = compute_limit(x * GiNaC::log(x), xs, 0, 0, F.T.t);
+  CAPTURE(xlogx.reason);
+  REQUIRE_FALSE(xlogx.ok);
+  REQUIRE(xlogx.reason.find("eps") != std::string::npos);
+}
+
+TEST_CASE("first_order and series_first_order", "[limit][series]") {
+  test::Table T;
+  T.add("m", Domain::positive()).add("v", Domain::real()).add("dm", Domain::real()).add("dv", Domain::real())
+      .add("u", Domain::real()).add("x", Domain::real());
+  ex m = T["m"], v = T["v"], dm = T["dm"], dv = T["dv"], u = T["u"], x = T["x"];
+  // rocket momentum balance: (m + dm)(v + dv) + (-dm)(v - u) - m v, first order: m dv + u dm
+  ex bal = (m + dm) * (v + dv) - dm * (v - u) - m * v;
+  std::vector<GiNaC::symbol> smalls{T.sym("dm"), T.sym("dv")};  // copies: sliced, matched by name
+  ex fo = first_order(bal, smalls);
+  REQUIRE(prove_equal(fo, m * dv + u * dm, T.t).kind == VerdictKind::Proved);
+  REQUIRE_FALSE(prove_equal(bal, m * dv + u * dm, T.t).holds());  // dm*dv was really dropped
+
+  auto s = series_first_order(GiNaC::sqrt(1 + x), T.sym("x"), 0);
+  REQUIRE(s);
+  REQUIRE(prove_equal(*s, 1 + x / 2, T.t).kind == VerdictKind::Proved);
+  auto s2 = series_first_order(GiNaC::sin(x) / x, T.sym("x"), 0);
+  REQUIRE(s2);
+  REQUIRE(prove_equal(*s2, 1, T.t).kind == VerdictKind::Proved);
+  std::string why;
+  auto s3 = series_first_order(GiNaC::sqrt(x), T.sym("x"), 0, &why);
+  REQUIRE_FALSE(s3);
+  REQUIRE(!why.empty());
+}
