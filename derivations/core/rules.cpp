@@ -69,8 +69,10 @@ struct Combiner {
   Verdict worst;
   bool any = false;
   std::vector<std::string> methods;
-  void add(Verdict v, const std::string& what) {
-    if (std::find(methods.begin(), methods.end(), v.method) == methods.end()) methods.push_back(v.method);
+  // silent: a consistency check whose method is not worth naming when it holds
+  void add(Verdict v, const std::string& what, bool silent = false) {
+    if (!(silent && v.holds()) && std::find(methods.begin(), methods.end(), v.method) == methods.end())
+      methods.push_back(v.method);
     if (!what.empty() && v.kind != VerdictKind::Proved) v.detail = what + (v.detail.empty() ? "" : ": " + v.detail);
     if (!any || severity(v.kind) > severity(worst.kind)) worst = std::move(v);
     any = true;
@@ -78,7 +80,7 @@ struct Combiner {
   Verdict result() const {
     if (!any) return undecided("none", "nothing to check");
     Verdict v = worst;
-    if (v.kind == VerdictKind::Proved) {
+    if (v.kind == VerdictKind::Proved && !methods.empty()) {
       std::string m;
       for (std::size_t i = 0; i < methods.size(); ++i) m += (i ? ", " : "") + methods[i];
       v.method = m;
@@ -216,8 +218,9 @@ class Checker {
       const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
       if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
       ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
+      // a symbol, an abstract function value v(0), or an application such as sin(theta)
       auto substitutable = [](const ex& e) {
-        return GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0;
+        return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e) || pool_function_index(e) >= 0;
       };
       if (substitutable(lhs) && !rhs.has(lhs)) out.push_back({lhs, rhs});
       else if (substitutable(rhs) && !lhs.has(rhs)) out.push_back({rhs, lhs});
@@ -227,14 +230,16 @@ class Checker {
     return out;
   }
   static ex apply(ex e, const std::vector<std::pair<ex, ex>>& subs) {
-    for (const auto& [from, to] : subs) e = e.subs(from == to);
+    for (const auto& [from, to] : subs) e = e.subs(from == to, GiNaC::subs_options::no_pattern);
     return e;
   }
 
   // --- elimination ------------------------------------------------------------------
   struct Reduction {
-    std::vector<std::pair<ex, ex>> eliminated;  // atomized (var, value)
+    std::vector<std::pair<ex, ex>> eliminated;  // atomized (var, value); var may be sin(theta)
+    std::vector<ex> function_atoms;             // eliminated applications such as sin(theta)
     std::vector<ex> leftover;                   // equations with nothing eliminable (atomized, reduced)
+    int vanished = 0;                           // equations that reduced to 0 identically
     bool resource_limit = false;
   };
 
@@ -252,12 +257,52 @@ class Checker {
     return true;  // atoms (abstract functions) are unrestricted
   }
 
+  static void collect_functions(const ex& e, std::vector<ex>& out) {
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+      for (const auto& o : out)
+        if (o.is_equal(e)) return;
+      out.push_back(e);
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) collect_functions(e.op(i), out);
+  }
+
+  // Is `num` linear in `c` (a symbol or a function application)? Then value = -rest/coef.
+  static bool linear_in(const ex& num, const ex& c, ex& coef, ex& value) {
+    ex n = num, var = c;
+    GiNaC::realsymbol tmp("dc_tmp");
+    if (!GiNaC::is_a<GiNaC::symbol>(c)) {
+      n = num.subs(c == tmp, GiNaC::subs_options::no_pattern);
+      var = tmp;
+      if (!n.has(tmp)) return false;
+    }
+    ex k = n.coeff(var, 1);
+    if (k.is_zero() || k.has(var)) return false;
+    ex rest = (n - k * var).expand();
+    if (rest.has(var)) return false;
+    if (!GiNaC::is_a<GiNaC::symbol>(c)) {
+      // the application must not survive elsewhere (e.g. theta outside sin(theta) is fine,
+      // but sin(theta) inside the coefficient is not)
+      if (k.has(c) || rest.has(c)) return false;
+    }
+    coef = k;
+    value = -rest / k;
+    return true;
+  }
+
   Reduction reduce(std::vector<Eq> eqs, const ex& target, const std::vector<ex>& preferred,
                    bool only_preferred) {
     Reduction red;
-    for (auto& q : eqs) {
+    ex t = atoms_(target);
+    // Work list: an equation with nothing to eliminate is retried after later eliminations
+    // (v1 eliminated by a later reference makes dh = v1^2/(2 g) usable).
+    std::vector<Eq> pending = std::move(eqs);
+    for (int pass = 0; pass < 8 && !pending.empty(); ++pass) {
+    std::size_t before = red.eliminated.size();
+    std::vector<Eq> retry;
+    red.leftover.clear();
+    for (auto& q : pending) {
       ex e = atoms_(q.e);
-      for (const auto& [v, val] : red.eliminated) e = e.subs(v == val);
+      for (const auto& [v, val] : red.eliminated) e = e.subs(v == val, GiNaC::subs_options::no_pattern);
       if (estimate_expanded_terms(e) > static_cast<double>(opt_.max_terms)) {
         red.resource_limit = true;
         continue;
@@ -269,49 +314,74 @@ class Checker {
         red.resource_limit = true;
         continue;
       }
-      if (num.is_zero()) continue;
+      if (num.is_zero()) {
+        ++red.vanished;
+        continue;
+      }
       std::vector<ex> cands;
       collect_symbols(num, cands);
       ex hint = atoms_(q.hint);
-      ex t = atoms_(target);
-      int best_score = -1;
+      long best_score = -1;
       ex best, best_value;
-      for (const auto& c : cands) {
+      bool best_is_function = false;
+      auto consider = [&](const ex& c, bool is_function) {
         bool pref = false;
         for (const auto& p : preferred)
-          if (p.is_equal(c)) pref = true;
-        if (only_preferred && !pref) continue;
-        ex coef = num.coeff(c, 1);
-        if (coef.is_zero() || coef.has(c)) continue;
-        ex rest = (num - coef * c).expand();
-        if (rest.has(c)) continue;
-        int score = 0;
+          if (p.is_equal(c) || atoms_(p).is_equal(c)) pref = true;
+        if (only_preferred && !pref) return;
+        ex coef, value;
+        if (!linear_in(num, c, coef, value)) return;
+        long score = 0;
         if (pref) score += 1000;
+        if (!is_function) score += 500;   // symbols before applications such as sin(theta)
         if (t.has(c)) score += 100;
         if (hint.is_equal(c)) score += 50;
-        if (real_domain(c)) score += 20;
+        if (is_function || real_domain(c)) score += 20;
         if (GiNaC::is_a<GiNaC::numeric>(coef)) score += 10;
         score = score * 100 + std::max(0, declaration_index(c)) % 100;
         if (score > best_score) {
           best_score = score;
           best = c;
-          best_value = -rest / coef;
+          best_value = value;
+          best_is_function = is_function;
         }
-      }
+      };
+      for (const auto& c : cands) consider(c, false);
+      std::vector<ex> fns;
+      collect_functions(num, fns);
+      for (const auto& f : fns)
+        if (pool_function_index(f) < 0) consider(f, true);
       if (best_score < 0) {
         red.leftover.push_back(num);
+        retry.push_back(q);
         continue;
       }
-      for (auto& [v, val] : red.eliminated) val = val.subs(best == best_value);
+      for (auto& [v, val] : red.eliminated) val = val.subs(best == best_value, GiNaC::subs_options::no_pattern);
       red.eliminated.push_back({best, best_value});
+      if (best_is_function) red.function_atoms.push_back(best);
+      t = t.subs(best == best_value, GiNaC::subs_options::no_pattern);
+    }
+    pending = std::move(retry);
+    if (red.eliminated.size() == before) break;
     }
     return red;
   }
 
   ex reduced(const ex& e, const Reduction& red) {
     ex r = atoms_(e);
-    for (const auto& [v, val] : red.eliminated) r = r.subs(v == val);
+    for (const auto& [v, val] : red.eliminated) r = r.subs(v == val, GiNaC::subs_options::no_pattern);
     return atoms_.restore(r);
+  }
+
+  // After eliminating sin(theta), a counterexample in the remaining variables is only a real
+  // one when theta itself no longer appears (otherwise the point may violate the equation).
+  bool dependent(const Reduction& red, const ex& residual) const {
+    for (const auto& f : red.function_atoms) {
+      std::vector<ex> syms;
+      collect_symbols(f, syms);
+      if (has_any(residual, syms)) return true;
+    }
+    return false;
   }
 
   std::string eliminated_text(const Reduction& red) const {
@@ -326,6 +396,13 @@ class Checker {
     Reduction red = reduce(eqs, a - b, preferred, false);
     ex ra = reduced(a, red), rb = reduced(b, red);
     Verdict v = prove_equal(ra, rb, d_.symbols, opt_);
+    if (v.kind == VerdictKind::Refuted && dependent(red, ra - rb)) {
+      Verdict u = undecided(v.method, "the difference does not vanish after eliminating " + eliminated_text(red) +
+                                          ", but the point found need not satisfy the references (" +
+                                          text(red.function_atoms[0]) + " was eliminated while its argument remains)");
+      u.residual = text(ra - rb);
+      v = u;
+    }
     if (red.resource_limit && !v.holds()) {
       v = undecided(v.method, "resource limit: an equation would expand beyond " + std::to_string(opt_.max_terms) + " terms");
     }
@@ -516,7 +593,13 @@ Verdict Checker::solve(const Relation& claim) {
     if (G.has(unknowns[which])) fail(s_.claim_pos, "the claimed solution for '" + text(out(lhs)) + "' contains it");
     std::vector<Eq> back;
     for (const auto& e : E) back.push_back({e.subs(unknowns[which] == G), ex(), ""});
-    Reduction red = reduce(back, ex(0), others, true);
+    // Quantities of the equations that the claim does not mention (v1, dh in the ballistic
+    // pendulum) are intermediate: they are eliminated together with the other unknowns.
+    std::vector<ex> elim = others, in_eqs;
+    for (const auto& q : back) collect_symbols(q.e, in_eqs);
+    for (const auto& sym : in_eqs)
+      if (!G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
+    Reduction red = reduce(back, ex(0), elim, true);
     int checked = 0;
     for (const auto& left : red.leftover) {
       Verdict v = prove_zero(atoms_.restore(out(left)), d_.symbols, opt_);
@@ -528,7 +611,7 @@ Verdict Checker::solve(const Relation& claim) {
     if (checked == 0 && !red.resource_limit) {
       // Every equation was used to eliminate another unknown, or reduced to 0: the claim
       // satisfies all of them identically.
-      if (!red.eliminated.empty())
+      if (red.vanished == 0)
         c.add(undecided("claim substituted back", "the equations do not determine " + text(out(lhs)) +
                                                       " (they are used up by the other unknowns)"),
               "");
@@ -598,13 +681,13 @@ Verdict Checker::limit_or_series(const Relation& claim, bool is_limit) {
       ex g = apply(to_ginac(n.args[0], d_.symbols), subs);
       Verdict v = prove_equal(g, f, d_.symbols, opt_);
       v.method = prefix_method("limit argument", v.method);
-      c.add(v, what);
+      c.add(v, what, true);
       continue;
     }
     if (i == 0 && has_lhs) {
       Verdict v = prove_equal(conv(claim.sides[0]), as[0], d_.symbols, opt_);
       v.method = prefix_method(rname + " (left-hand side)", v.method);
-      c.add(v, what);
+      c.add(v, what, true);
       continue;
     }
     int sinf = 0;
@@ -734,10 +817,13 @@ Verdict Checker::integrate(const Relation& claim) {
   }
   // initial value
   ex y0 = Y.subs(t == T0), y0_value = y0;
+  std::vector<std::pair<ex, ex>> at_T0;   // other values at T0, e.g. m_r(0) = m0
   for (const auto& w : rule().with) {
     ex l = conv(w.equation.sides[0]), r = conv(w.equation.sides[1]);
     if (l.is_equal(y0)) y0_value = r;
-    else fail(w.pos, "expected the initial value '" + text(y0) + " = value' after 'with'", w.length);
+    else if (GiNaC::is_a<GiNaC::symbol>(l) || GiNaC::is_a<GiNaC::function>(l)) at_T0.push_back({l, r});
+    else fail(w.pos, "expected 'y(T0) = value' after 'with' (the initial value of " + text(y0) + " or of another function)",
+              w.length);
   }
   std::vector<Eq> extra;
   for (std::size_t i = 1; i < rule().refs.size(); ++i) {
@@ -752,7 +838,7 @@ Verdict Checker::integrate(const Relation& claim) {
     Verdict v1 = follows(G.diff(ts), fG, extra);
     v1.method = prefix_method("d/d" + text(t) + " of the closed form", v1.method);
     c.add(v1, "side " + std::to_string(i + 1) + ", derivative");
-    Verdict v2 = follows(G.subs(t == T0), y0_value, extra);
+    Verdict v2 = follows(apply(G.subs(t == T0), at_T0), apply(y0_value, at_T0), extra);
     v2.method = prefix_method("initial value", v2.method);
     c.add(v2, "side " + std::to_string(i + 1) + ", at " + text(t) + " = " + text(T0));
     if (i == 1) res_.derived = "d/d" + text(t) + " (" + text(G) + ") = " + text(G.diff(ts));
@@ -826,7 +912,13 @@ Verdict Checker::run(const Relation& claim) {
 // Dimension of every side; a mismatch is an error at the claim with both dimensions.
 void check_dimensions(const Derivation& d, const Relation& claim, StepResult& res) {
   std::vector<Dimension> dims;
+  std::vector<const Node*> nodes;
   for (const auto& side : claim.sides) {
+    // A literal 0 has every dimension (`m_p*v_p - m_c*v_c = 0`).
+    const Node* z = &side;
+    while (z->kind == NodeKind::Neg) z = &z->args[0];
+    if (z->kind == NodeKind::Number && z->text.find_first_not_of("0.") == std::string::npos) continue;
+    nodes.push_back(&side);
     try {
       dims.push_back(dimension_of(side, d.symbols));
     } catch (const InputError& e) {
@@ -837,10 +929,10 @@ void check_dimensions(const Derivation& d, const Relation& claim, StepResult& re
   if (dims.empty()) return;
   for (std::size_t i = 1; i < dims.size(); ++i) {
     if (dims[i] != dims[0]) {
-      const Node& n = claim.sides[i];
+      const Node& n = *nodes[i];
       res.errors.push_back(positioned(
           d, n.pos,
-          "dimension mismatch: '" + to_text(claim.sides[0]) + "' has dimension " + dims[0].to_string() + " but '" +
+          "dimension mismatch: '" + to_text(*nodes[0]) + "' has dimension " + dims[0].to_string() + " but '" +
               to_text(n) + "' has dimension " + dims[i].to_string(),
           n.length));
       return;
