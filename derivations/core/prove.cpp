@@ -216,6 +216,44 @@ ex apply_side_relations(const ex& e) {
   return GiNaC::normal(GiNaC::expand(s));
 }
 
+// ------------------------------------------------------------------ conditions for real values
+
+enum class CondKind { Nonzero, Positive, Nonnegative, UnitInterval };
+
+struct RawCond {
+  CondKind kind;
+  ex arg;
+  std::string reason;
+};
+
+void collect_conditions(const ex& e, std::vector<RawCond>& out) {
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out);
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex& b = e.op(0);
+    const ex& x = e.op(1);
+    if (GiNaC::is_a<numeric>(b)) {
+      // constants such as sqrt(2) or 1/2 need nothing
+      return;
+    }
+    if (GiNaC::is_a<numeric>(x)) {
+      const numeric& n = GiNaC::ex_to<numeric>(x);
+      if (n.is_integer()) {
+        if (n.is_negative()) out.push_back({CondKind::Nonzero, b, "divisor"});
+        return;
+      }
+      std::string why = (n.denom() == 2) ? "sqrt argument" : "fractional power base";
+      out.push_back({n.is_negative() ? CondKind::Positive : CondKind::Nonnegative, b,
+                     n.is_negative() ? why + " (divisor)" : why});
+      return;
+    }
+    out.push_back({CondKind::Positive, b, "power base"});
+    return;
+  }
+  if (is_fn(e, "log")) out.push_back({CondKind::Positive, e.op(0), "log argument"});
+  if (is_fn(e, "acos")) out.push_back({CondKind::UnitInterval, e.op(0), "acos argument"});
+  if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
+}
+
 // ------------------------------------------------------------------ stage 4: numeric probe
 
 numeric pow10(long k) { return GiNaC::pow(numeric(10), numeric(k)); }
@@ -401,10 +439,47 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     return v;
   }
 
+  // Real-domain guards: a claim about real quantities is only tested where every log, root,
+  // acos and asin in it is real (a point where acos gets 1.5 can give real values on both
+  // sides through complex intermediates; such points are rejected, not counted).
+  std::vector<RawCond> guards;
+  collect_conditions(lhs, guards);
+  collect_conditions(rhs, guards);
+  guards.erase(std::remove_if(guards.begin(), guards.end(),
+                              [](const RawCond& c) { return c.kind == CondKind::Nonzero; }),
+               guards.end());
+  auto guards_hold = [&](const GiNaC::exmap& p, std::uint64_t fseed) {
+    const numeric slack = pow10(-25);
+    for (const RawCond& g : guards) {
+      ex a;
+      try {
+        a = g.arg.subs(p, GiNaC::subs_options::no_pattern);
+        if (abstract) a = d::replace_abstract(a, fseed);
+      } catch (const std::exception&) {
+        return false;
+      }
+      d::RealValue rv = d::eval_real(a, 40);
+      if (!rv.ok) return false;
+      switch (g.kind) {
+        case CondKind::Positive:
+          if (!rv.value.is_positive()) return false;
+          break;
+        case CondKind::Nonnegative:
+          if (rv.value < -slack) return false;
+          break;
+        case CondKind::UnitInterval:
+          if (GiNaC::abs(rv.value) > 1 + slack) return false;
+          break;
+        case CondKind::Nonzero: break;
+      }
+    }
+    return true;
+  };
+
   d::Rng rng(opt.seed);
   const int need = std::max(1, opt.probe_points);
   const int max_attempts = std::max(100, need * 40);
-  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, nonreal = 0, unstable = 0;
+  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, nonreal = 0, unstable = 0, outside_real = 0;
   numeric max_rel = 0;
   for (; attempts < max_attempts && agreed < need; ++attempts) {
     bool wide = attempts >= need * 10;  // widen magnitudes when narrow draws keep failing
@@ -415,16 +490,20 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       continue;
     }
     ex l, r;
+    std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
     try {
       l = lhs.subs(p, GiNaC::subs_options::no_pattern);
       r = rhs.subs(p, GiNaC::subs_options::no_pattern);
       if (abstract) {
-        std::uint64_t s = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
-        l = d::replace_abstract(l, s);
-        r = d::replace_abstract(r, s);
+        l = d::replace_abstract(l, fseed);
+        r = d::replace_abstract(r, fseed);
       }
     } catch (const std::exception&) {
       ++undefined;
+      continue;
+    }
+    if (!guards.empty() && !guards_hold(p, fseed)) {
+      ++outside_real;
       continue;
     }
     PointOutcome o = compare_sides(l, r, D, tol);
@@ -483,7 +562,8 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   else
     why << "only " << agreed << " of " << need << " sample points were usable (" << attempts
         << " tried: " << excluded << " outside the assumptions, " << undefined << " undefined, "
-        << nonreal << " not real, " << unstable << " unstable)";
+        << outside_real << " outside the real domain of log/sqrt/acos/asin, " << nonreal << " not real, "
+        << unstable << " unstable)";
   v.reason = why.str();
   v.detail = v.reason;
   return v;
@@ -572,42 +652,6 @@ Verdict prove_zero(const ex& e, const SymbolTable& ctx, const ProveOptions& opt)
 // ------------------------------------------------------------------ side conditions
 
 namespace {
-
-enum class CondKind { Nonzero, Positive, Nonnegative, UnitInterval };
-
-struct RawCond {
-  CondKind kind;
-  ex arg;
-  std::string reason;
-};
-
-void collect_conditions(const ex& e, std::vector<RawCond>& out) {
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out);
-  if (GiNaC::is_a<GiNaC::power>(e)) {
-    const ex& b = e.op(0);
-    const ex& x = e.op(1);
-    if (GiNaC::is_a<numeric>(b)) {
-      // constants such as sqrt(2) or 1/2 need nothing
-      return;
-    }
-    if (GiNaC::is_a<numeric>(x)) {
-      const numeric& n = GiNaC::ex_to<numeric>(x);
-      if (n.is_integer()) {
-        if (n.is_negative()) out.push_back({CondKind::Nonzero, b, "divisor"});
-        return;
-      }
-      std::string why = (n.denom() == 2) ? "sqrt argument" : "fractional power base";
-      out.push_back({n.is_negative() ? CondKind::Positive : CondKind::Nonnegative, b,
-                     n.is_negative() ? why + " (divisor)" : why});
-      return;
-    }
-    out.push_back({CondKind::Positive, b, "power base"});
-    return;
-  }
-  if (is_fn(e, "log")) out.push_back({CondKind::Positive, e.op(0), "log argument"});
-  if (is_fn(e, "acos")) out.push_back({CondKind::UnitInterval, e.op(0), "acos argument"});
-  if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
-}
 
 std::string condition_text(CondKind k, const ex& a, const SymbolTable& ctx) {
   switch (k) {

@@ -269,3 +269,17 @@ TEST_CASE("DigitsGuard restores GiNaC::Digits", "[prove][digits]") {
   prove_equal(GiNaC::atan(T["xp"]) + GiNaC::atan(1 / T["xp"]), GiNaC::Pi / 2, T.t);
   REQUIRE(static_cast<long>(GiNaC::Digits) == before);
 }
+
+TEST_CASE("the probe tests claims only where every log/root/acos argument is real", "[prove][probe]") {
+  test::Table T = standard_table();
+  ex x = T["x"], y = T["y"];
+  // x, y < 0 would give real values on both sides (-sqrt(xy) against sqrt(xy)) through
+  // imaginary intermediates: such points are outside the real domain and are not counted.
+  Verdict v = prove_equal(GiNaC::sqrt(x) * GiNaC::sqrt(y), GiNaC::sqrt(x * y), T.t);
+  CAPTURE(describe(v));
+  REQUIRE(v.kind == VerdictKind::HoldsNumerically);
+  // its side conditions say where it is meaningful
+  auto conds = side_conditions(GiNaC::sqrt(x) * GiNaC::sqrt(y), T.t);
+  REQUIRE(conds.size() == 2);
+  for (const auto& c : conds) REQUIRE(c.status == SideCondition::Status::Violated);
+}

@@ -119,3 +119,19 @@ TEST_CASE("rocket and pendulum forms", "[prove][physics]") {
   CAPTURE(describe(dh));
   REQUIRE(dh.kind == VerdictKind::Proved);
 }
+
+TEST_CASE("ballistic pendulum: the half-angle form of theta holds where it is defined", "[prove][physics]") {
+  test::Table T;
+  T.add("m", Domain::positive()).add("M", Domain::positive()).add("v0", Domain::positive())
+      .add("L", Domain::positive()).add("g", Domain::positive());
+  ex m = T["m"], M = T["M"], v0 = T["v0"], L = T["L"], g = T["g"];
+  ex theta = GiNaC::acos(1 - GiNaC::pow(m / (M + m), 2) * v0 * v0 / (2 * L * g));
+  ex half = 2 * GiNaC::asin(m * v0 / (2 * (M + m) * GiNaC::sqrt(L * g)));
+  Verdict v = prove_equal(theta, half, T.t);
+  CAPTURE(describe(v));
+  REQUIRE(v.kind == VerdictKind::HoldsNumerically);
+  // without the factor 2 in the half-angle form: refuted
+  Verdict w = prove_equal(theta, GiNaC::asin(m * v0 / (2 * (M + m) * GiNaC::sqrt(L * g))), T.t);
+  CAPTURE(describe(w));
+  REQUIRE(w.kind == VerdictKind::Refuted);
+}
