@@ -487,18 +487,43 @@ class Renderer {
     } else {
       num.push_back(number_text(c));
     }
+    // Square roots of several factors merge into one radical: sqrt(2)*sqrt(g*x) -> sqrt(2*g*x).
+    std::vector<std::string> root_num, root_den;
+    bool bare_num_sum = false, bare_den_sum = false;
     for (const auto& f : p.kids) {
-      if (f.kind == Kind::Power && f.kids[1].kind == Kind::Product && f.kids[1].kids.empty() &&
-          f.kids[1].value.is_real() && f.kids[1].value.is_negative()) {
+      bool numeric_exp = f.kind == Kind::Power && f.kids[1].kind == Kind::Product && f.kids[1].kids.empty() &&
+                         f.kids[1].value.is_real();
+      if (numeric_exp && (f.kids[1].value == numeric(1, 2) || f.kids[1].value == numeric(-1, 2))) {
+        const PNode& b = f.kids[0];
+        bool plain = b.kind == Kind::Product && sign_of(b.value) > 0;  // a product needs no group here
+        (f.kids[1].value.is_negative() ? root_den : root_num).push_back(plain ? render(b) : factor(b));
+      } else if (numeric_exp && f.kids[1].value.is_negative()) {
         PNode e = f.kids[1];
         e.value = -e.value;
         den.push_back(power_factor(f.kids[0], e));
+        bare_den_sum = f.kids[0].kind == Kind::Sum && e.value == 1;
       } else {
         num.push_back(factor(f));
+        bare_num_sum = f.kind == Kind::Sum;
       }
     }
+    auto radical = [&](const std::vector<std::string>& fs) {
+      std::string inner = join_factors(fs);
+      return latex() ? "\\sqrt{" + inner + "}" : "sqrt(" + inner + ")";
+    };
+    if (!root_num.empty()) num.push_back(radical(root_num));
+    if (!root_den.empty()) den.push_back(radical(root_den));
     if (num.size() == 1 && num[0] == "1" && !den.empty()) num.clear();
     if (den.empty()) return num.empty() ? "1" : join_factors(num);
+    if (latex()) {
+      // \frac groups its parts: a lone sum needs no parentheses there
+      auto strip = [&](std::vector<std::string>& v, bool bare) {
+        if (v.size() == 1 && bare && v[0].rfind(lp(), 0) == 0)
+          v[0] = v[0].substr(lp().size(), v[0].size() - lp().size() - rp().size());
+      };
+      strip(num, bare_num_sum);
+      strip(den, bare_den_sum);
+    }
     std::string n = num.empty() ? "1" : join_factors(num);
     std::string d = join_factors(den);
     if (latex()) return "\\frac{" + n + "}{" + d + "}";
