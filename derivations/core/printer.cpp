@@ -240,7 +240,7 @@ class Builder {
   static int factor_rank(const PNode& n) {
     const PNode& b = n.kind == Kind::Power ? n.kids[0] : n;
     switch (b.kind) {
-      case Kind::Product: return 0;  // a number raised to a power (sqrt(2))
+      case Kind::Product: return b.kids.empty() ? 0 : 3;  // a number raised to a power (sqrt(2)) first
       case Kind::Symbol: return 1;
       case Kind::Function:
       case Kind::Derivative: return 2;
@@ -335,6 +335,20 @@ class Builder {
     n.kids.push_back(build(e.op(1)));
     // A product base (only a number here: GiNaC distributes powers of products of symbols
     // with integer exponents) stays as it is.
+    // Under a non-integer power a sum keeps its own sign: sqrt(2*g*(y2 - r2)) must not become
+    // sqrt(-2*g*(r2 - y2)).
+    const PNode& ex_node = n.kids[1];
+    bool integer_exp = ex_node.kind == Kind::Product && ex_node.kids.empty() && ex_node.value.is_integer();
+    if (!integer_exp && n.kids[0].kind == Kind::Product && sign_of(n.kids[0].value) < 0) {
+      PNode& b = n.kids[0];
+      for (auto& k : b.kids)
+        if (k.kind == Kind::Sum) {
+          negate_sum(k);
+          b.value = -b.value;
+          finish_product(b);
+          break;
+        }
+    }
     n.key = render_key(n);
     if (n.kids[0].kind == Kind::Sum) {
       // The sign of a sum under an integer power is canonicalised by absorb_factor; standing
@@ -457,8 +471,7 @@ class Renderer {
     for (const auto& s : fs) {
       if (out.empty()) { out = s; continue; }
       if (!latex()) { out += "*" + s; continue; }
-      bool digit = !s.empty() && (std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-' ||
-                                  s.rfind("\\frac", 0) == 0 || s.rfind("{", 0) == 0);
+      bool digit = !s.empty() && (std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-');
       out += digit ? " \\cdot " + s : " " + s;
     }
     return out;
@@ -540,6 +553,13 @@ class Renderer {
       std::string inner = render(base);
       return latex() ? "\\sqrt{" + inner + "}" : "sqrt(" + inner + ")";
     }
+    if (latex() && base.kind == Kind::Function && base.kids.size() == 1 && numeric_exp &&
+        expo.value.is_pos_integer() && trig_head(base.fname)) {
+      // \cos^{2} \theta, \sin^{2}\left(a + b\right)
+      const PNode& a = base.kids[0];
+      std::string head = std::string(trig_head(base.fname)) + "^{" + int_str(expo.value) + "}";
+      return atomic_arg(a) ? head + " " + render(a) : head + paren(render(a));
+    }
     std::string b = factor_base(base, true);
     std::string e;
     if (numeric_exp && expo.value.is_rational() && !expo.value.is_integer()) {
@@ -567,7 +587,9 @@ class Renderer {
         !base.value.is_negative())
       return render(base);
     if (!under_power && (base.kind == Kind::Function || base.kind == Kind::Derivative)) return render(base);
-    if (base.kind == Kind::Function && latex() && base.fname != "exp") return render(base);
+    // f(x)^2 reads unambiguously in text and for declared functions, |x| and roots in LaTeX
+    if (base.kind == Kind::Function && (!latex() || (!trig_head(base.fname) && base.fname != "exp")))
+      return render(base);
     return paren(render(base));
   }
 
@@ -597,20 +619,25 @@ class Renderer {
            (a.kind == Kind::Product && a.kids.empty() && a.value.is_integer() && !a.value.is_negative());
   }
 
-  std::string function(const PNode& n) {
-    if (!latex()) return n.fname + "(" + args_text(n) + ")";
+  static const char* trig_head(const std::string& f) {
     static const std::pair<const char*, const char*> kTex[] = {
         {"log", "\\ln"}, {"sin", "\\sin"}, {"cos", "\\cos"}, {"tan", "\\tan"},
         {"asin", "\\arcsin"}, {"acos", "\\arccos"}, {"atan", "\\arctan"},
         {"sinh", "\\sinh"}, {"cosh", "\\cosh"}, {"tanh", "\\tanh"}};
+    for (const auto& [g, t] : kTex)
+      if (f == g) return t;
+    return nullptr;
+  }
+
+  std::string function(const PNode& n) {
+    if (!latex()) return n.fname + "(" + args_text(n) + ")";
     if (n.fname == "exp" && n.kids.size() == 1) return "\\mathrm{e}^{" + render(n.kids[0]) + "}";
     if (n.fname == "abs" && n.kids.size() == 1) return "\\left|" + render(n.kids[0]) + "\\right|";
-    for (const auto& [g, t] : kTex)
-      if (n.fname == g && n.kids.size() == 1) {
-        if (atomic_arg(n.kids[0])) return std::string(t) + " " + render(n.kids[0]);
-        return std::string(t) + paren(render(n.kids[0]));
-      }
-    return n.ftex + paren(args_text(n));
+    if (const char* t = trig_head(n.fname); t && n.kids.size() == 1) {
+      if (atomic_arg(n.kids[0])) return std::string(t) + " " + render(n.kids[0]);
+      return std::string(t) + paren(render(n.kids[0]));
+    }
+    return n.ftex + "(" + args_text(n) + ")";
   }
 
   std::string derivative(const PNode& n) {

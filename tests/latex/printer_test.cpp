@@ -106,6 +106,9 @@ TEST_CASE("printer: textbook forms of impact results", "[latex][printer]") {
   CHECK(dc::print_latex(GiNaC::sqrt(2 * s.mu * s.t_), t) == "\\sqrt{2 \\mu t}");
   CHECK(dc::print_latex(GiNaC::acos(1 - s.e), t) == "\\arccos\\left(1 - e\\right)");
   CHECK(dc::print_latex(GiNaC::cos(s.theta), t) == "\\cos \\theta");
+  CHECK(dc::print_latex(GiNaC::pow(GiNaC::cos(s.theta), 2), t) == "\\cos^{2} \\theta");
+  // a sum under a square root keeps its own sign
+  CHECK(dc::print_text(GiNaC::sqrt(2 * s.mu * (s.v2 - s.v1)), t) == "sqrt(2*mu*(v2 - v1))");
   CHECK(dc::print_text(-s.m1 / (s.m1 + s.m2), t) == "-m1/(m1 + m2)");
   ex mr = dc::apply_pool_function(t.function_index("mr"), s.t_);
   CHECK(dc::print_text(mr, t) == "mr(t)");
