@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -24,7 +25,9 @@ struct SimulateOptions {
   double step = 0;
   double tol = 1e-10;
   std::string csv, pgfplots, gnuplot, png;
-  bool list = false, describe = false, markdown = false;
+  bool list = false, describe = false, markdown = false, time = false;
+  std::string derivations = "derivations/handout9";
+  bool derivations_given = false;
   double max_rel_error = -1;
 };
 
@@ -54,6 +57,9 @@ int run(const SimulateOptions& o) {
   opt.method = o.method.empty() ? spec.default_method : parse_method(o.method);
   opt.h = o.step;
   opt.tol = o.tol;
+  // closed forms from the derivation files when they are there (else the built-in copies)
+  if (std::filesystem::is_directory(o.derivations)) opt.derivations = o.derivations;
+  else if (o.derivations_given) throw std::invalid_argument("simulate: --derivations '" + o.derivations + "' is not a directory");
   if (!o.method.empty() && spec.methods.empty())
     throw std::invalid_argument(spec.name + ": this scene has no integrator (exact events / linear algebra); drop --method");
   if (o.step != 0 && spec.methods.empty())
@@ -78,18 +84,22 @@ int run(const SimulateOptions& o) {
               << ", " << r.rhs_evaluations << " right-hand-side evaluations\n";
   else
     std::cout << "  method: exact (event times solved in closed form / linear systems)\n";
-  std::printf("  %-18s %24s %24s %10s  %s\n", "quantity", "simulated", "closed form", "rel.error", "closed form");
+  std::cout << "  closed forms: "
+            << (opt.derivations.empty() ? std::string("built-in copies (no derivations directory; --derivations DIR)")
+                                        : "derived formulas from " + opt.derivations + " where labelled, else built-in")
+            << "\n";
+  std::printf("  %-18s %24s %24s %10s  %s\n", "quantity", "simulated", "closed form", "rel.error", "[source] closed form");
   double worst = 0;
   for (const auto& c : r.comparisons) {
     const double e = c.rel_error();
     worst = std::isfinite(e) ? std::max(worst, e) : HUGE_VAL;
     std::string unit = c.unit == "1" ? "" : " " + c.unit;
-    std::printf("  %-18s %24s %24s %10.2e  %s\n", c.quantity.c_str(), (fmt("%.15g", c.simulated) + unit).c_str(),
-                (fmt("%.15g", c.closed_form) + unit).c_str(), e, c.formula.c_str());
+    std::printf("  %-18s %24s %24s %10.2e  [%s] %s\n", c.quantity.c_str(), (fmt("%.15g", c.simulated) + unit).c_str(),
+                (fmt("%.15g", c.closed_form) + unit).c_str(), e, c.source.c_str(), c.formula.c_str());
   }
   for (const auto& [k, v] : r.metrics) std::printf("  %s = %.6g\n", k.c_str(), v);
   for (const auto& n : r.notes) std::cout << "  note: " << n << "\n";
-  std::cerr << "simulate: " << fmt("%.3g", secs * 1e3) << " ms\n";
+  if (o.time) std::cerr << "simulate: " << fmt("%.3g", secs * 1e3) << " ms\n";
 
   if (!o.csv.empty()) write_file_atomic(o.csv, r.series.to_csv());
   const std::string title = spec.title + " (" + spec.handout + ")";
@@ -99,8 +109,7 @@ int run(const SimulateOptions& o) {
     write_file_atomic(o.pgfplots, tex);
   }
   if (!o.gnuplot.empty()) {
-    if (o.csv.empty() || o.png.empty())
-      throw std::invalid_argument("simulate: --gnuplot needs --csv (the data) and --png (the image it draws)");
+    if (o.csv.empty()) throw std::invalid_argument("simulate: --gnuplot needs --csv (the data it plots)");
     const std::string gp = figure_gnuplot(r, title, o.csv, o.png);
     if (gp.empty()) throw std::invalid_argument(spec.name + ": this scene has no figure for --gnuplot");
     write_file_atomic(o.gnuplot, gp);
@@ -125,10 +134,15 @@ const CommandRegistrar registrar{
       sub.add_option("--method", o->method, "integrator: euler, rk4, dopri5, verlet, rosenbrock (default: the scene's)");
       sub.add_option("--step", o->step, "time step [s] (dopri5: output spacing); default: the scene's");
       sub.add_option("--tol", o->tol, "dopri5 absolute and relative tolerance (default 1e-10)");
+      sub.add_option("--derivations", o->derivations,
+                     "directory of the handout's derivation files whose formulas are the closed forms "
+                     "(default derivations/handout9 if present)")
+          ->each([o](const std::string&) { o->derivations_given = true; });
+      sub.add_flag("--time", o->time, "print the run's wall time on stderr");
       sub.add_option("--csv", o->csv, "write the time series as CSV (atomically)");
       sub.add_option("--pgfplots", o->pgfplots, "write the scene's figure as a pgfplots tikzpicture (atomically)");
       sub.add_option("--gnuplot", o->gnuplot, "write a gnuplot script drawing the figure from --csv into --png");
-      sub.add_option("--png", o->png, "the PNG file the --gnuplot script draws");
+      sub.add_option("--png", o->png, "the PNG file the --gnuplot script draws (default: standard output)");
       sub.add_option("--max-rel-error", o->max_rel_error,
                      "exit 1 if any simulated quantity differs from its closed form by more than this");
       sub.footer("Scenes: spring, pendulum, bounce, rocket, chain, ladder, cradle, cannon, impact, oblique.\n"

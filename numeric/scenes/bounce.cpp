@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/derived.hpp"
 #include "numeric/scenes/scenes.hpp"
 
 namespace dc::scenes {
@@ -30,7 +31,7 @@ double time_to_ground(double h, double v, double g) {
 
 }  // namespace
 
-SceneResult run_bounce(const Params& p, const RunOptions&) {
+SceneResult run_bounce(const Params& p, const RunOptions& opt) {
   const double m1 = p.at("m1"), m2 = p.at("m2"), r1 = p.at("r1"), r2 = p.at("r2"), y2_0 = p.at("y2"),
                s = p.at("s"), e2 = p.at("e2"), e12 = p.at("e12"), g = p.at("g");
   const double mu = m1 / m2;
@@ -38,6 +39,7 @@ SceneResult run_bounce(const Params& p, const RunOptions&) {
   bool b2_resting = false;  // ball 2 lying on the ground (after a landing with e2 = 0)
   double t = 0;
   int ground_impacts = 0;
+  double v0_actual = 0;  // ball 2's velocity at its first ground impact
   SceneResult r;
   r.series.columns = {"t", "y1", "v1", "y2", "v2"};
   auto record = [&] { r.series.rows.push_back({t, b1.y, b1.v, b2.y, b2.v}); };
@@ -66,6 +68,7 @@ SceneResult run_bounce(const Params& p, const RunOptions&) {
     if (t_ground < t_contact) {
       advance(t_ground);
       b2.y = r2;  // exactly on the ground
+      if (ground_impacts == 0) v0_actual = b2.v;
       b2.v = -e2 * b2.v;
       ++ground_impacts;
       if (b2.v == 0) b2_resting = true;
@@ -83,12 +86,17 @@ SceneResult run_bounce(const Params& p, const RunOptions&) {
     // the closed forms: from the actual pre-impact velocities (the mu-form of the general
     // impact), and the handout's zero-separation form v2 = -e2 v0, v1 = v0
     const double v1p_mu = (mu * v1 + v2 - e12 * (v1 - v2)) / (mu + 1);
-    r.comparisons.push_back({"v1p", "m/s", b1.v, cf::bounce_v1p(mu, e2, e12, v0_cf),
-                             "(mu - e2 - e12 (1 + e2))/(mu + 1) v0 (zero separation)", "built-in"});
-    r.comparisons.push_back({"v2p", "m/s", b2.v, cf::bounce_v2p(mu, e2, e12, v0_cf),
-                             "(mu - e2 + mu e12 (1 + e2))/(mu + 1) v0 (zero separation)", "built-in"});
-    r.comparisons.push_back({"v1p_actual", "m/s", b1.v, v1p_mu,
-                             "(mu v1 + v2 - e12 (v1 - v2))/(mu + 1) at the actual v1, v2", "built-in"});
+    const std::string file = "07_two_ball_bounce.dc";
+    const std::map<std::string, double> at = {{"mu", mu}, {"e2", e2}, {"e12", e12}, {"v0", v0_cf},
+                                              {"v1", v1}, {"v2", v2}, {"g", g}, {"y2", y2_0}, {"r2", r2}};
+    r.comparisons.push_back(closed_form(opt, "v1p", "m/s", b1.v, cf::bounce_v1p(mu, e2, e12, v0_cf),
+                                        "(mu - e2 - e12 (1 + e2))/(mu + 1) v0 (zero separation)", file, "v1p_bounce", at));
+    r.comparisons.push_back(closed_form(opt, "v2p", "m/s", b2.v, cf::bounce_v2p(mu, e2, e12, v0_cf),
+                                        "(mu - e2 + mu e12 (1 + e2))/(mu + 1) v0 (zero separation)", file, "v2p_bounce", at));
+    r.comparisons.push_back(closed_form(opt, "v1p_actual", "m/s", b1.v, v1p_mu,
+                                        "(mu v1 + v2 - e12 (v1 - v2))/(mu + 1) at the actual v1, v2", file, "v1p_mu", at));
+    r.comparisons.push_back(closed_form(opt, "v0", "m/s", v0_actual, v0_cf, "-sqrt(2 g (y2 - r2)) (ground impact)", file,
+                                        "fall_speed", at));
     // the limit mu -> 0: v'1 -> -(e2 + (1 + e2) e12) v0, i.e. -3 v0 for e2 = e12 = 1
     r.metrics["v1p_over_v0"] = b1.v / v0_cf;
     r.metrics["v1p_over_v0_limit_mu0"] = -(e2 + (1 + e2) * e12);

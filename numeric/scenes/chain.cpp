@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/derived.hpp"
 #include "numeric/scenes/scenes.hpp"
 
 namespace dc::scenes {
@@ -71,8 +72,12 @@ SceneResult run_chain(const Params& p, const RunOptions& opt) {
     auto ev = integrate(ig, x, t, t_guard, opt.h, [&](const State& s, double) { return L - s[0]; }, observe);
     t = ev.t;
   }
-  r.comparisons.push_back({"N(x)", "N", N_of(at_rep), cf::chain_N(m, L, g, at_rep[0]), "3 x m g / L", "built-in"});
-  r.comparisons.push_back({"v(x)", "m/s", at_rep[1], cf::chain_v(g, at_rep[0]), "sqrt(2 g x)", "built-in"});
+  const std::string file = "10_falling_chain.dc";
+  const std::map<std::string, double> at = {{"m", m}, {"L", L}, {"g", g}, {"x", at_rep[0]}};
+  r.comparisons.push_back(closed_form(opt, "N(x)", "N", N_of(at_rep), cf::chain_N(m, L, g, at_rep[0]), "3 x m g / L",
+                                      file, "scale_force", at));
+  r.comparisons.push_back(closed_form(opt, "v(x)", "m/s", at_rep[1], cf::chain_v(g, at_rep[0]), "sqrt(2 g x)", file,
+                                      "fall_speed", at));
   r.comparisons.push_back({"N(L)", "N", N_of(x), cf::chain_N(m, L, g, x[0]), "3 m g: three times the weight", "built-in"});
   r.comparisons.push_back({"t_landed", "s", t, std::sqrt(2 * L / g), "sqrt(2 L/g) (free fall)", "built-in"});
   r.metrics["x_reported"] = at_rep[0];

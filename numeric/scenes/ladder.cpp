@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/derived.hpp"
 #include "numeric/scenes/scenes.hpp"
 
 namespace dc::scenes {
@@ -47,8 +48,9 @@ SceneResult run_ladder(const Params& p, const RunOptions& opt) {
 
   const double vGx = -0.5 * l * std::sin(x[0]) * x[1];  // x_G' at separation (x[1] < 0)
   r.comparisons.push_back({"sin_theta_sep", "1", std::sin(x[0]), 2.0 / 3.0 * std::sin(theta0), "(2/3) sin theta0", "built-in"});
-  r.comparisons.push_back({"J_wall", "N s", x[2], cf::ladder_wall_impulse(m, l, g, theta0),
-                           "(m/3) sqrt(g l) sin^(3/2) theta0", "built-in"});
+  r.comparisons.push_back(closed_form(opt, "J_wall", "N s", x[2], cf::ladder_wall_impulse(m, l, g, theta0),
+                                      "(m/3) sqrt(g l) sin^(3/2) theta0", "03_ladder.dc", "wall_impulse",
+                                      {{"m", m}, {"l", l}, {"g", g}, {"theta0", theta0}}));
   r.comparisons.push_back({"J_vs_momentum", "N s", x[2], m * vGx, "m v_Gx at separation (impulse = momentum change)", "built-in"});
   r.metrics["t_sep"] = ev.t;
   r.metrics["theta_sep_deg"] = x[0] * 180 / std::numbers::pi;

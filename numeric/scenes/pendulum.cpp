@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/derived.hpp"
 #include "numeric/scenes/scenes.hpp"
 
 namespace dc::scenes {
@@ -54,12 +55,17 @@ SceneResult run_pendulum(const Params& p, const RunOptions& opt) {
   if (v1 > 0) ev = integrate(ig, x, 0, t_max_run, opt.h, [](const State& s, double) { return s[1]; }, observe);
   else observe(x, 0);
 
-  r.comparisons.push_back({"v1", "m/s", v1, cf::pendulum_v1(m, M, v0), "m v0/(M+m)", "built-in"});
-  r.comparisons.push_back({"theta_max", "rad", x[0], cf::pendulum_theta(m, M, v0, L, g),
-                           "arccos(1 - (m/(M+m))^2 v0^2/(2Lg)) (evaluated as 2 asin(m v0/((M+m) 2 sqrt(gL))))", "built-in"});
+  const std::map<std::string, double> at = {{"m", m}, {"M", M}, {"v0", v0}, {"L", L}, {"g", g}};
+  r.comparisons.push_back(closed_form(opt, "v1", "m/s", v1, cf::pendulum_v1(m, M, v0), "m v0/(M+m)",
+                                      "06_ballistic_pendulum.dc", "v1_after", at));
+  r.comparisons.push_back(closed_form(opt, "theta_max", "rad", x[0], cf::pendulum_theta(m, M, v0, L, g),
+                                      "arccos(1 - (m/(M+m))^2 v0^2/(2Lg)) (built-in: 2 asin(m v0/((M+m) 2 sqrt(gL))))",
+                                      "06_ballistic_pendulum.dc", "deflection", at));
   const double T1 = 0.5 * (M + m) * v1 * v1;
   const double dT = 0.5 * m * v0 * v0 - T1;
-  r.comparisons.push_back({"dT_impact", "J", dT, cf::dT_general(m, M, v0, 0, 0), "(1-e^2)/2 m M/(M+m) v0^2 with e = 0", "built-in"});
+  r.comparisons.push_back(closed_form(opt, "dT_impact", "J", dT, cf::dT_general(m, M, v0, 0, 0),
+                                      "(1-e^2)/2 m M/(M+m) v0^2 with e = 0", "05_direct_impact.dc",
+                                      "energy_loss_general", {{"m1", m}, {"m2", M}, {"v1", v0}, {"v2", 0}, {"e", 0}}));
   r.metrics["t_turn"] = ev.t;
   r.metrics["theta_max_deg"] = x[0] * 180 / std::numbers::pi;
   r.rhs_evaluations = ig.rhs_evaluations();

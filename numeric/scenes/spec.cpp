@@ -482,7 +482,7 @@ std::string figure_gnuplot(const SceneResult& r, const std::string& title, const
   };
   std::ostringstream o;
   o << "set terminal pngcairo size 900,500 font 'DejaVu Sans,11'\n";
-  o << "set output '" << png_path << "'\n";
+  if (!png_path.empty()) o << "set output '" << png_path << "'\n";
   o << "set datafile separator ','\nset key top left\nset grid\n";
   o << "set title '" << title << "'\nset xlabel '" << plain(f.xlabel) << "'\nset ylabel '" << plain(f.ylabel) << "'\n";
   o << "plot ";

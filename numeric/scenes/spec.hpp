@@ -41,6 +41,8 @@ struct Comparison {
   double closed_form = 0;
   std::string formula;       // the closed form in words/maths: "m2 v0/(m1+m2)"
   std::string source;        // where the closed form came from: "built-in" or "FILE:LABEL"
+  double builtin = 0;        // with a derived closed form (source FILE:LABEL): the hand-typed
+                             // value of closed_forms.hpp, for the cross-check; else unused
   double rel_error() const;  // |sim - cf| / |cf| (absolute error when cf == 0)
 };
 
@@ -55,6 +57,9 @@ struct RunOptions {
   Method method = Method::rk4;
   double h = 0;      // step (fixed-step methods) or output spacing (dopri5); 0: scene default
   double tol = 1e-10;  // dopri5 absolute and relative tolerance
+  // Directory of the handout's derivation files (derivations/handout9): closed forms are then
+  // evaluated from the derived formulas by label (derived.hpp); empty: the built-in copies.
+  std::string derivations;
 };
 
 struct SceneResult {

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/derived.hpp"
 #include "numeric/scenes/scenes.hpp"
 
 namespace dc::scenes {
@@ -81,7 +82,9 @@ SceneResult run_spring(const Params& p, const RunOptions& opt) {
 
   const double xG0 = m2 * L0 / M, xG1 = (m1 * x[0] + m2 * x[1]) / M;
   const double vG_cf = cf::v_G(m1, m2, 0, v0);
-  r.comparisons.push_back({"v_G", "m/s", (xG1 - xG0) / t_end, vG_cf, "m2 v0/(m1 + m2)  (x_G(t_end) - x_G(0))/t_end", "built-in"});
+  r.comparisons.push_back(closed_form(opt, "v_G", "m/s", (xG1 - xG0) / t_end, vG_cf,
+                                      "(m1 v_10 + m2 v0)/(m1 + m2), v_10 = 0; simulated: (x_G(t_end) - x_G(0))/t_end",
+                                      "04_system_of_particles.dc", "vG_two", {{"m1", m1}, {"m2", m2}, {"v_10", 0}, {"v0", v0}}));
   r.comparisons.push_back({"P(t_end)", "N s", m1 * x[2] + m2 * x[3], P0, "m2 v0 (conserved, no external force)", "built-in"});
   const double ext = x[1] - x[0] - L0;
   r.comparisons.push_back({"E(t_end)", "J", 0.5 * m1 * x[2] * x[2] + 0.5 * m2 * x[3] * x[3] + 0.5 * k * ext * ext, E0,
