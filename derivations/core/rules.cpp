@@ -595,10 +595,16 @@ Verdict Checker::solve(const Relation& claim) {
     for (const auto& e : E) back.push_back({e.subs(unknowns[which] == G), ex(), ""});
     // Quantities of the equations that the claim does not mention (v1, dh in the ballistic
     // pendulum) are intermediate: they are eliminated together with the other unknowns.
+    // A quantity counts as intermediate when it links at least two of the equations (a
+    // parameter such as g in a single equation is not eliminated: that would use the equation
+    // up instead of checking it).
     std::vector<ex> elim = others, in_eqs;
     for (const auto& q : back) collect_symbols(q.e, in_eqs);
-    for (const auto& sym : in_eqs)
-      if (!G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
+    for (const auto& sym : in_eqs) {
+      int count = 0;
+      for (const auto& q : back) count += q.e.has(sym) ? 1 : 0;
+      if (count >= 2 && !G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
+    }
     Reduction red = reduce(back, ex(0), elim, true);
     int checked = 0;
     for (const auto& left : red.leftover) {

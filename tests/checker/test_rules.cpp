@@ -1,0 +1,141 @@
+// Each rule on true and false steps: tests/data/rules/*.dc label correct steps ok_* (must be
+// proved or hold numerically) and wrong steps bad_* (must be refuted, with a counterexample
+// or the two values). Premises (given/definition) must be accepted, and no step may have an
+// error: dimensions in the fixtures are consistent.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/report.hpp"
+#include "derivations/core/rules.hpp"
+
+namespace {
+
+std::string data(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/" + rel; }
+
+bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p, 0) == 0; }
+
+}  // namespace
+
+TEST_CASE("every rule accepts its true steps and refutes its false ones", "[rules]") {
+  std::string file = GENERATE(as<std::string>{}, "rewrite", "substitute", "solve", "limit", "series", "first_order",
+                              "differentiate", "integrate", "solves_ode", "definition");
+  CAPTURE(file);
+  dc::Derivation d = dc::load_derivation(data("rules/" + file + ".dc"));
+  dc::CheckSummary sum = dc::check_derivation(d);
+  int ok = 0, bad = 0;
+  for (std::size_t i = 0; i < d.steps.size(); ++i) {
+    const dc::Step& s = d.steps[i];
+    const dc::StepResult& r = sum.results[i];
+    CAPTURE(s.label, dc::verdict_phrase(r.verdict), r.verdict.detail, r.derived);
+    std::string errors;
+    for (const auto& e : r.errors) errors += e.format();
+    CAPTURE(errors);
+    CHECK(r.errors.empty());
+    if (starts_with(s.label, "ok_")) {
+      ++ok;
+      CHECK(r.verdict.holds());
+    } else if (starts_with(s.label, "bad_")) {
+      ++bad;
+      CHECK(r.verdict.kind == dc::VerdictKind::Refuted);
+      // evidence: a counterexample point or the two differing values
+      CHECK((!r.verdict.point.empty() || !r.verdict.lhs_value.empty() || !r.verdict.detail.empty()));
+    } else {
+      CHECK(r.verdict.holds());
+    }
+  }
+  CHECK(ok >= 1);
+  CHECK(bad >= 1);
+}
+
+TEST_CASE("solve reports what lsolve derived, deterministically", "[rules][solve]") {
+  dc::Derivation d = dc::load_derivation(data("rules/solve.dc"));
+  const dc::Step* s = d.find("ok_solve");
+  REQUIRE(s);
+  dc::StepResult a = dc::check_step(d, *s);
+  dc::StepResult b = dc::check_step(d, *s);
+  CHECK(a.verdict.kind == dc::VerdictKind::Proved);
+  CHECK(a.verdict.method.find("lsolve") != std::string::npos);
+  CHECK(a.derived.find("v2p = ") != std::string::npos);
+  CHECK(a.derived == b.derived);
+  // dividing by m1 + m2 is recorded as a side condition
+  bool divisor = false;
+  for (const auto& c : a.verdict.side_conditions) divisor = divisor || c.reason == "divisor";
+  CHECK(divisor);
+}
+
+TEST_CASE("a nonlinear solve substitutes the claim back", "[rules][solve]") {
+  dc::Derivation d = dc::load_derivation(data("rules/solve.dc"));
+  dc::StepResult r = dc::check_step(d, *d.find("ok_nonlinear"));
+  CHECK(r.verdict.holds());
+  CHECK(r.verdict.method.find("substituted back") != std::string::npos);
+}
+
+TEST_CASE("definitions are abbreviations: their dimension is inferred", "[rules][definition]") {
+  dc::Derivation d = dc::load_derivation(data("rules/definition.dc"));
+  const dc::SymbolInfo* p = d.symbols.find("p");
+  REQUIRE(p);
+  CHECK(p->defined_by_step);
+  CHECK(p->dimension.to_string() == "kg·m/s");
+  dc::StepResult r = dc::check_step(d, *d.find("ok_energy"));
+  CHECK(r.dimension == "kg·m²/s²");
+}
+
+TEST_CASE("a dimension mismatch is reported at the step with both dimensions", "[rules][dimensions]") {
+  dc::SourceText src{"dim.dc",
+                     "symbol m : positive [kg]\n"
+                     "symbol v : real [m/s]\n"
+                     "symbol p : real [kg*m/s]\n"
+                     "wrong: p = m*v^2\n"
+                     "    by given\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  dc::CheckSummary sum = dc::check_derivation(d);
+  REQUIRE(sum.results.size() == 1);
+  REQUIRE(sum.results[0].errors.size() == 1);
+  const dc::InputError& e = sum.results[0].errors[0];
+  CHECK(e.pos().line == 4);
+  CHECK(e.pos().col == 12);
+  CHECK(e.message().find("kg·m/s") != std::string::npos);
+  CHECK(e.message().find("kg·m²/s²") != std::string::npos);
+  CHECK(sum.errors == 1);
+  CHECK(sum.exit_code(false) == 1);
+}
+
+TEST_CASE("an erratum reports the printed claim and checks the corrected one", "[rules][erratum]") {
+  dc::SourceText src{"erratum.dc",
+                     "symbol v, u_e : positive [m/s]\n"
+                     "symbol g : positive [m/s^2]\n"
+                     "symbol t : positive [s]\n"
+                     "ratio: (v_e + g*t)/u_e\n"
+                     "    by given\n"
+                     "    erratum \"v_e is never defined; the intended quantity is v\" : (v + g*t)/u_e\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  dc::CheckSummary sum = dc::check_derivation(d);
+  REQUIRE(sum.results.size() == 1);
+  const dc::StepResult& r = sum.results[0];
+  CHECK(r.erratum_reported);
+  REQUIRE(r.errors.size() == 1);
+  CHECK(r.errors[0].pos().line == 4);
+  CHECK(r.errors[0].pos().col == 9);
+  CHECK(r.errors[0].message().find("v_e") != std::string::npos);
+  CHECK(sum.errata == 1);
+  CHECK(sum.errors == 0);
+  CHECK(sum.exit_code(false) == 0);
+  CHECK(sum.exit_code(true) == 1);
+}
+
+TEST_CASE("a wrong printed claim with an erratum is reported with its refutation", "[rules][erratum]") {
+  dc::SourceText src{"erratum2.dc",
+                     "symbol a, b : real [1]\n"
+                     "sq: (a + b)^2 = a^2 + b^2\n"
+                     "    by expand\n"
+                     "    erratum \"the cross term is missing\" : (a + b)^2 = a^2 + 2*a*b + b^2\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  dc::CheckSummary sum = dc::check_derivation(d);
+  const dc::StepResult& r = sum.results[0];
+  CHECK(r.erratum_reported);
+  CHECK(r.verdict.holds());
+  REQUIRE(!r.errors.empty());
+  CHECK(r.errors[0].message().find("printed claim is wrong") != std::string::npos);
+}
