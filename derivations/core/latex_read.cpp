@@ -185,6 +185,7 @@ class Reader {
     char c = peek();
     if (c == '+' || c == '-' || c == '=' || c == '&' || c == '}' || c == ')' || c == ',' || c == '^' || c == '/')
       return false;
+    if (match_name()) return true;  // a TeX name may start with anything, even "\,"  
     if (starts("\\\\") || command("\\right") || starts("\\,") || command("\\to") || command("\\cdot") ||
         command("\\notag") || command("\\tag") || command("\\end") || command("\\footnotemark"))
       return false;
@@ -474,7 +475,7 @@ class Reader {
     if (match_name()) return name_or_call();
     if (accept("\\pi")) return make(NodeKind::Symbol, "pi");
     if (accept("\\infty")) return make(NodeKind::Symbol, "oo");
-    fail("unexpected input");
+    fail("unknown symbol or unexpected input");
   }
 
   std::string_view s_;
