@@ -1,0 +1,356 @@
+#include "numeric/crosscheck.hpp"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <set>
+#include <stdexcept>
+
+#include "derivations/core/prove.hpp"
+#include "numeric/exact.hpp"
+#include "numeric/reference.hpp"
+
+namespace dc::num {
+namespace {
+
+using GiNaC::ex;
+
+const Step* stable_step_for(const Derivation& d, const std::string& label) {
+  for (const Step& s : d.steps)
+    if (s.stable_of && *s.stable_of == label) return &s;
+  return nullptr;
+}
+
+double bound_to_double(const ex& b) {
+  DigitsGuard guard(40);
+  const ex v = GiNaC::evalf(b);
+  if (!GiNaC::is_a<GiNaC::numeric>(v)) throw std::invalid_argument("domain bound is not a number");
+  return round_to_double(GiNaC::ex_to<GiNaC::numeric>(v));
+}
+
+std::string fmt(double x, const char* f = "%.3g") {
+  if (std::isinf(x)) return "inf";
+  if (std::isnan(x)) return "nan";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, x);
+  return buf;
+}
+
+void free_symbol_names(const ex& e, std::set<std::string>& out) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    out.insert(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    return;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) free_symbol_names(e.op(i), out);
+}
+
+struct Candidate {
+  std::vector<double> x;
+  std::string kind;  // "random" or a stress description
+};
+
+class Checker {
+ public:
+  Checker(const Derivation& d, const Formula& f, const CrossCheckOptions& opt, std::uint64_t seed)
+      : d_(d), f_(f), opt_(opt), rng_(seed) {
+    for (const auto& s : f.params) {
+      const SymbolInfo* info = d.symbols.find(s.get_name());
+      if (!info) throw std::invalid_argument("parameter '" + s.get_name() + "' is not declared");
+      infos_.push_back(info);
+    }
+  }
+
+  // A random value in the symbol's declared domain (typical magnitudes).
+  double draw(const SymbolInfo& info) {
+    std::uniform_real_distribution<double> u(-opt_.typical_decades, opt_.typical_decades);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double mag = std::pow(10.0, u(rng_));
+    switch (info.domain.kind) {
+      case Domain::Kind::Positive:
+      case Domain::Kind::Nonnegative: return mag;
+      case Domain::Kind::Negative: return -mag;
+      case Domain::Kind::Real: return unit(rng_) < 0.5 ? -mag : mag;
+      case Domain::Kind::Interval: {
+        const double lo = bound_to_double(info.domain.lo), hi = bound_to_double(info.domain.hi);
+        for (int k = 0; k < 100; ++k) {
+          const double x = lo + (hi - lo) * unit(rng_);
+          if (x > lo && x < hi) return x;
+        }
+        return 0.5 * (lo + hi);
+      }
+    }
+    return mag;
+  }
+
+  // Exact point, or nullopt if a value is outside its domain or a constraint fails.
+  std::optional<GiNaC::exmap> exact_point(const std::vector<double>& x) {
+    GiNaC::exmap p;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      if (!std::isfinite(x[i])) return std::nullopt;
+      const GiNaC::numeric v = exact_rational(x[i]);
+      if (!infos_[i]->domain.contains(v)) return std::nullopt;
+      p[f_.params[i]] = v;
+    }
+    for (const Constraint& c : d_.symbols.constraints()) {
+      std::set<std::string> rest;
+      free_symbol_names(c.lhs.subs(p), rest);
+      free_symbol_names(c.rhs.subs(p), rest);
+      if (!rest.empty()) continue;
+      if (!c.holds_at(p)) return std::nullopt;
+    }
+    return p;
+  }
+
+  // The reference value, or nullopt if undefined / not representable in double.
+  std::optional<GiNaC::numeric> reference(const GiNaC::exmap& p) {
+    try {
+      GiNaC::numeric r = reference_value(f_.expr, p, opt_.digits);
+      const double approx = round_to_double(r);
+      if (!std::isfinite(approx)) return std::nullopt;  // beyond DBL_MAX
+      return r;
+    } catch (const std::domain_error&) {
+      return std::nullopt;
+    }
+  }
+
+  std::vector<Candidate> stress_candidates(const std::vector<double>& base) {
+    std::vector<Candidate> out;
+    const std::size_t n = base.size();
+    auto with = [&](std::size_t i, double v, std::string what) {
+      Candidate c{base, std::move(what)};
+      c.x[i] = v;
+      out.push_back(std::move(c));
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      const SymbolInfo& s = *infos_[i];
+      const std::string& nm = s.name;
+      if (s.domain.kind == Domain::Kind::Interval) {
+        const double lo = bound_to_double(s.domain.lo), hi = bound_to_double(s.domain.hi);
+        const double w = hi - lo;
+        with(i, lo + w * 1e-9, nm + " -> " + fmt(lo) + " (+1e-9)");
+        with(i, hi - w * 1e-9, nm + " -> " + fmt(hi) + " (-1e-9)");
+        with(i, lo, nm + " = " + fmt(lo));
+        with(i, hi, nm + " = " + fmt(hi));
+        continue;
+      }
+      const double sign = base[i] < 0 ? -1.0 : 1.0;
+      for (double f : {1e-8, 1e8}) with(i, base[i] * f, nm + " * " + fmt(f, "%g"));
+      for (double a : {1e-160, 1e160, 1e-300, 1e300}) with(i, sign * a, nm + " = " + fmt(sign * a, "%g"));
+    }
+    // like symbols (same declared dimension, not intervals) approaching each other
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j) {
+        if (i == j) continue;
+        const SymbolInfo &a = *infos_[i], &b = *infos_[j];
+        if (!a.has_dimension || !b.has_dimension || !(a.dimension == b.dimension)) continue;
+        if (a.domain.kind == Domain::Kind::Interval || b.domain.kind == Domain::Kind::Interval) continue;
+        for (double r : {1e-9, -1e-9, 1e-13})
+          with(j, base[i] * (1 - r), b.name + " -> " + a.name + " (rel " + fmt(r, "%g") + ")");
+      }
+    return out;
+  }
+
+  const std::vector<const SymbolInfo*>& infos() const { return infos_; }
+  std::mt19937_64& rng() { return rng_; }
+
+ private:
+  const Derivation& d_;
+  const Formula& f_;
+  const CrossCheckOptions& opt_;
+  std::mt19937_64 rng_;
+  std::vector<const SymbolInfo*> infos_;
+};
+
+struct Acc {
+  std::vector<double> errs;
+  double max_random = 0, max_stress = 0, max = -1;
+  std::size_t n_stress = 0, non_finite = 0;
+  std::vector<double> worst_x;
+  std::string worst_kind;
+  void add(double err, bool finite_result, const Candidate& c) {
+    errs.push_back(err);
+    const bool stress = c.kind != "random";
+    if (stress) {
+      ++n_stress;
+      max_stress = std::max(max_stress, err);
+    } else {
+      max_random = std::max(max_random, err);
+    }
+    if (!finite_result) ++non_finite;
+    if (err > max) {
+      max = err;
+      worst_x = c.x;
+      worst_kind = c.kind;
+    }
+  }
+};
+
+std::uint64_t mix(std::uint64_t seed, const std::string& s) {
+  std::uint64_t h = seed ^ 0x9E3779B97F4A7C15ULL;  // FNV-1a over the label, seeded
+  for (unsigned char ch : s) h = (h ^ ch) * 0x100000001B3ULL;
+  return h;
+}
+
+}  // namespace
+
+CompiledFormula compile_formula(const Derivation& d, const std::string& label) {
+  CompiledFormula cf;
+  cf.formula = formula(d, label);
+  cf.used_label = label;
+  if (const Step* s = stable_step_for(d, label)) {
+    try {
+      const Formula sf = formula(d, s->label);
+      cf.program = compile(sf.expr, cf.formula.params);
+      cf.used_label = s->label;
+      cf.regime = s->stable_regime;
+      return cf;
+    } catch (const std::invalid_argument&) {
+      // the stable form needs inputs the formula does not have: use the formula itself
+    }
+  }
+  cf.program = compile(cf.formula.expr, cf.formula.params);
+  return cf;
+}
+
+std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt) {
+  std::vector<FormulaReport> reports;
+  for (const Formula& f : formulas(d)) {
+    FormulaReport rep;
+    rep.file = d.source.name;
+    rep.label = f.label;
+    rep.target = f.target;
+    if (f.step && f.step->stable_of) rep.stable_of = *f.step->stable_of;
+    std::optional<Program> naive, stable;
+    try {
+      naive = compile(f.expr, f.params);
+    } catch (const std::invalid_argument& e) {
+      rep.skipped = e.what();
+      reports.push_back(std::move(rep));
+      continue;
+    }
+    std::string stable_problem;
+    if (const Step* s = stable_step_for(d, f.label)) {
+      rep.stable_label = s->label;
+      rep.stable_regime = s->stable_regime;
+      try {
+        stable = compile(formula(d, s->label).expr, f.params);
+      } catch (const std::exception& e) {
+        stable_problem = e.what();
+      }
+    }
+    Evaluator<double> ev_d(*naive);
+    Evaluator<long double> ev_ld(*naive);
+    std::optional<Evaluator<double>> ev_s;
+    if (stable) ev_s.emplace(*stable);
+
+    Checker ck(d, f, opt, mix(opt.seed, d.source.name + ":" + f.label));
+    Acc acc_d, acc_ld, acc_s;
+    auto run = [&](const Candidate& c) -> bool {
+      auto p = ck.exact_point(c.x);
+      if (!p) return false;
+      auto ref = ck.reference(*p);
+      if (!ref) return false;
+      std::vector<double> xd = c.x;
+      std::vector<long double> xl(c.x.begin(), c.x.end());
+      const double vd = ev_d(xd);
+      acc_d.add(error_in_ulps(vd, *ref), std::isfinite(vd), c);
+      const long double vl = ev_ld(xl);
+      acc_ld.add(error_in_ulps(vl, *ref), std::isfinite(vl), c);
+      if (ev_s) {
+        const double vs = (*ev_s)(xd);
+        acc_s.add(error_in_ulps(vs, *ref), std::isfinite(vs), c);
+      }
+      return true;
+    };
+    std::optional<std::vector<double>> base;
+    int accepted = 0, tries = 0;
+    while (accepted < opt.points && tries < 50 * opt.points + 100) {
+      ++tries;
+      Candidate c{{}, "random"};
+      for (const SymbolInfo* s : ck.infos()) c.x.push_back(ck.draw(*s));
+      if (run(c)) {
+        ++accepted;
+        if (!base) base = c.x;
+      } else {
+        ++rep.rejected;
+      }
+    }
+    if (opt.stress && base)
+      for (const Candidate& c : ck.stress_candidates(*base))
+        if (!run(c)) ++rep.rejected;
+    auto stats = [&](const char* name, Acc& a) {
+      MethodStats m;
+      m.method = name;
+      m.points = a.errs.size();
+      m.stress_points = a.n_stress;
+      m.non_finite = a.non_finite;
+      if (!a.errs.empty()) {
+        std::vector<double> e = a.errs;
+        std::sort(e.begin(), e.end());
+        m.median_ulps = e[e.size() / 2];
+        m.max_ulps = e.back();
+      }
+      m.max_ulps_random = a.max_random;
+      m.max_ulps_stress = a.max_stress;
+      m.worst_kind = a.worst_kind;
+      for (std::size_t i = 0; i < a.worst_x.size(); ++i)
+        m.worst_point.emplace_back(f.params[i].get_name(), fmt(a.worst_x[i], "%.17g"));
+      return m;
+    };
+    rep.methods.push_back(stats("double", acc_d));
+    rep.methods.push_back(stats("long double", acc_ld));
+    if (ev_s) rep.methods.push_back(stats("stable", acc_s));
+    else if (!stable_problem.empty()) rep.skipped = "stable form " + rep.stable_label + ": " + stable_problem;
+    if (acc_d.errs.empty() && rep.skipped.empty())
+      rep.skipped = "no valid point found in the declared domain";
+    reports.push_back(std::move(rep));
+  }
+  return reports;
+}
+
+std::string format_crosscheck(const std::vector<FormulaReport>& reports, const CrossCheckOptions& opt) {
+  std::string out;
+  std::string file;
+  char line[512];
+  for (const FormulaReport& r : reports) {
+    if (r.file != file) {
+      file = r.file;
+      out += "\n" + file + "\n";
+      std::snprintf(line, sizeof line, "  %-28s %-12s %9s %8s %10s %10s  %s\n", "formula", "method",
+                    "points", "median", "max(rand)", "max(stress)", "worst at");
+      out += line;
+    }
+    std::string name = r.label;
+    if (!r.stable_of.empty()) name += " (stable of " + r.stable_of + ")";
+    if (!r.skipped.empty() && r.methods.empty()) {
+      out += "  " + name + ": not evaluated: " + r.skipped + "\n";
+      continue;
+    }
+    for (std::size_t k = 0; k < r.methods.size(); ++k) {
+      const MethodStats& m = r.methods[k];
+      std::string where;
+      if (m.max_ulps > 4) {
+        where = m.worst_kind + ":";
+        for (const auto& [n, v] : m.worst_point) where += " " + n + "=" + v;
+      }
+      const std::string method = m.method == "stable" ? "stable(" + r.stable_label + ")" : m.method;
+      std::snprintf(line, sizeof line, "  %-28s %-12s %5zu+%-3zu %8s %10s %10s  %s\n",
+                    k == 0 ? name.c_str() : "", method.c_str(), m.points - m.stress_points,
+                    m.stress_points, fmt(m.median_ulps).c_str(), fmt(m.max_ulps_random).c_str(),
+                    fmt(m.max_ulps_stress).c_str(), where.c_str());
+      out += line;
+    }
+    if (!r.skipped.empty()) out += "  " + std::string(28, ' ') + " note: " + r.skipped + "\n";
+  }
+  std::string head = "derivcheck crosscheck: seed " + std::to_string(opt.seed) + ", " +
+                     std::to_string(opt.points) + " random points per formula" +
+                     (opt.stress ? " + stress points" : "") + ", reference CLN at " +
+                     std::to_string(opt.digits) + " digits\n" +
+                     "errors in ulps of double at the exact value for the same (double) inputs\n";
+  return head + out;
+}
+
+}  // namespace dc::num

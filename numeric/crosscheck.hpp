@@ -1,0 +1,67 @@
+// Cross-check: every formula of a derivation evaluated by each fast method (double, long
+// double, and the file's stable form where one is declared with `stable LABEL "regime"`)
+// against the CLN reference, at seeded random points in the declared domains plus stress
+// points that drive each symbol to the edges of its domain and pairs of like symbols
+// towards each other. Errors are in units in the last place of double at the reference
+// value, with the reference evaluated at exactly the (rounded) double inputs, so the error is
+// the method's own rounding error, not input rounding.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "derivations/core/derivation.hpp"
+#include "numeric/evaluator.hpp"
+
+namespace dc::num {
+
+struct CrossCheckOptions {
+  std::uint64_t seed = 20261121;
+  int points = 200;         // random points per formula (stress points come on top)
+  bool stress = true;
+  int digits = 40;          // reference precision
+  double typical_decades = 2;  // positive symbols: 10^U(-d, d)
+};
+
+struct MethodStats {
+  std::string method;       // "double", "long double", "stable"
+  std::size_t points = 0;
+  std::size_t stress_points = 0;
+  double median_ulps = 0, max_ulps = 0;
+  double max_ulps_random = 0, max_ulps_stress = 0;
+  std::size_t non_finite = 0;  // inf/NaN where the reference is finite
+  std::vector<std::pair<std::string, std::string>> worst_point;  // name, value (17 digits)
+  std::string worst_kind;      // "random" or the stress description
+};
+
+struct FormulaReport {
+  std::string file, label, target;
+  std::string stable_label;    // the step declared `stable <this label>` (empty if none)
+  std::string stable_regime;
+  std::string stable_of;       // this formula is itself the stable form of ...
+  std::string skipped;         // non-empty: why it is not evaluated (e.g. abstract functions)
+  std::size_t rejected = 0;    // candidate points outside constraints or where undefined
+  std::vector<MethodStats> methods;
+};
+
+// The evaluator a user of the formula gets: the stable form when the file declares one
+// (stable forms are proved equal to the formula by the checker, and the cross-check shows
+// they are at least as accurate over the whole domain), otherwise the formula itself.
+struct CompiledFormula {
+  Formula formula;                 // the formula requested
+  std::string used_label;          // the step whose expression is compiled
+  std::string regime;              // the stable step's regime text, if used
+  Program program;
+};
+CompiledFormula compile_formula(const Derivation& d, const std::string& label);
+
+std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt);
+
+// Human-readable table (deterministic for a given seed).
+std::string format_crosscheck(const std::vector<FormulaReport>& reports, const CrossCheckOptions& opt);
+
+}  // namespace dc::num
