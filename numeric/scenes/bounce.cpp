@@ -45,6 +45,13 @@ SceneResult run_bounce(const Params& p, const RunOptions& opt) {
   auto record = [&] { r.series.rows.push_back({t, b1.y, b1.v, b2.y, b2.v}); };
   record();
   auto advance = [&](double tau) {
+    // sample the parabolas for the figure (the event times themselves are exact)
+    for (int k = 1; k < 40 && tau > 0; ++k) {
+      const double u = tau * k / 40;
+      const double y2 = b2_resting ? b2.y : b2.y + b2.v * u - 0.5 * g * u * u;
+      const double v2s = b2_resting ? 0.0 : b2.v - g * u;
+      r.series.rows.push_back({t + u, b1.y + b1.v * u - 0.5 * g * u * u, b1.v - g * u, y2, v2s});
+    }
     b1.y += b1.v * tau - 0.5 * g * tau * tau;
     b1.v -= g * tau;
     if (!b2_resting) {
@@ -115,6 +122,10 @@ SceneResult run_bounce(const Params& p, const RunOptions& opt) {
     r.notes.push_back("tennis ball rises " + std::to_string(r.metrics["height_ratio"]) +
                       " times the drop height above the contact point ((v'1/v0)^2 = " +
                       std::to_string(std::pow(b1.v / v0_cf, 2)) + ")");
+    // for the figure: the flight after the impact, up to the tennis ball's apex (or ball 2's
+    // next landing, where the model's story ends)
+    if (b1.v > 0) advance(std::min(b1.v / g, time_to_ground(b2.y - r2, b2.v, g)));
+    record();
     break;
   }
   r.figure = {"t", "$t$ [s]", "height [m]", {{"y1", "$y_1$"}, {"y2", "$y_2$"}}};
