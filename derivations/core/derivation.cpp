@@ -254,8 +254,8 @@ class Reader {
     }
     Header h;
     if (!parse_header(l, st.first_line, h, false)) {
-      bool looks_like_step = l[0] == '(' || (is_ident_start(l[0]) && l.find(':') != std::string::npos);
-      if (looks_like_step) parse_header(l, st.first_line, h, true);  // throws the precise error
+      // A line starting with '(' is a tagged step: report what is wrong with its header.
+      if (l[0] == '(') parse_header(l, st.first_line, h, true);
       std::string shown = w.empty() ? std::string(1, l[0]) : w;
       fail({file(), st.first_line, 1},
            "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
@@ -266,6 +266,10 @@ class Reader {
   }
 
   // --- small lexical helpers on spans ----------------------------------------------------
+  static std::size_t nonspace(const Span& s, std::size_t p) {
+    skip_ws(s, p);
+    return p;
+  }
   static void skip_ws(const Span& s, std::size_t& p) {
     while (p < s.text.size() && (is_space(s.text[p]) || s.text[p] == '\n')) ++p;
   }
@@ -772,44 +776,44 @@ class Reader {
     } else if (r == "rewrite") {
       for (auto& it : pre_items) spec.refs.push_back(ref_or_equation(s, it.first, it.second));
     } else if (r == "substitute") {
-      if (pre_items.empty()) fail(s.at(pre.b), "expected the substitutions (labels or 'x = value')" + usage(r));
+      if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the substitutions (labels or 'x = value')" + usage(r));
       for (auto& it : pre_items) spec.refs.push_back(ref_or_equation(s, it.first, it.second));
       spec.into = labels(s, require("into"), "the label of the step to substitute into", 1);
     } else if (r == "solve") {
-      if (pre_items.empty()) fail(s.at(pre.b), "expected the labels of the equations to solve" + usage(r));
+      if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the labels of the equations to solve" + usage(r));
       for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
       const Group& g = require("for");
       for (auto& it : items(s, g)) spec.unknowns.push_back(symbol_or_value(s, it.first, it.second));
-      if (spec.unknowns.empty()) fail(s.at(g.b), "expected the unknowns after 'for'" + usage(r));
+      if (spec.unknowns.empty()) fail(s.at(nonspace(s, g.b)), "expected the unknowns after 'for'" + usage(r));
     } else if (r == "limit" || r == "series") {
-      if (pre_items.size() != 1) fail(s.at(pre.b), "expected one variable before '->'" + usage(r));
+      if (pre_items.size() != 1) fail(s.at(nonspace(s, pre.b)), "expected one variable before '->'" + usage(r));
       spec.var = symbol_arg(s, pre_items[0].first, pre_items[0].second);
       const Group& g = require("->");
       auto pit = items(s, g);
-      if (pit.size() != 1) fail(s.at(g.b), "expected one point after '->' (a value, oo or -oo)" + usage(r));
+      if (pit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one point after '->' (a value, oo or -oo)" + usage(r));
       spec.point = value_arg(s, pit[0].first, pit[0].second);
       spec.into = labels(s, require("of"), "the label of the step to take the " + r + " of", 1);
     } else if (r == "first_order") {
-      if (pre_items.empty()) fail(s.at(pre.b), "expected the small quantities" + usage(r));
+      if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the small quantities" + usage(r));
       for (auto& it : pre_items) spec.smalls.push_back(symbol_arg(s, it.first, it.second));
       spec.into = labels(s, require("of"), "the label of the step to expand", 1);
     } else if (r == "differentiate" || r == "integrate" || r == "solves_ode") {
-      if (pre_items.empty()) fail(s.at(pre.b), "expected the label of the equation" + usage(r));
+      if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the label of the equation" + usage(r));
       for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
       const Group& g = require("wrt");
       auto wit = items(s, g);
-      if (wit.size() != 1) fail(s.at(g.b), "expected one variable after 'wrt'" + usage(r));
+      if (wit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one variable after 'wrt'" + usage(r));
       spec.var = symbol_arg(s, wit[0].first, wit[0].second);
       if (r == "integrate") {
         const Group& f = require("from");
         auto fit = items(s, f);
-        if (fit.size() != 1) fail(s.at(f.b), "expected one lower limit after 'from'" + usage(r));
+        if (fit.size() != 1) fail(s.at(nonspace(s, f.b)), "expected one lower limit after 'from'" + usage(r));
         spec.point = value_arg(s, fit[0].first, fit[0].second);
       }
     }
     if (const Group* g = group("with")) {
       auto wit = items(s, *g);
-      if (wit.empty()) fail(s.at(g->b), "expected 'x = value' after 'with'");
+      if (wit.empty()) fail(s.at(nonspace(s, g->b)), "expected 'x = value' after 'with'");
       for (auto& it : wit) {
         RuleArg a = ref_or_equation(s, it.first, it.second);
         if (a.kind != RuleArg::Kind::Equation)
@@ -883,7 +887,7 @@ class Reader {
 
   std::vector<RuleArg> labels(const Span& s, const auto& g, const std::string& what, std::size_t count) {
     auto it = items(s, g);
-    if (it.size() != count) fail(s.at(g.b), "expected " + what + " after '" + g.kw + "'");
+    if (it.size() != count) fail(s.at(nonspace(s, g.b)), "expected " + what + " after '" + g.kw + "'");
     std::vector<RuleArg> out;
     for (auto& i : it) out.push_back(label_arg(s, i.first, i.second));
     return out;

@@ -1,0 +1,157 @@
+// The .dc reader: every bad-input class gives an InputError with an exact position, the
+// offending line, and what was expected (issue 2, item 8). Runaway input (10^5-deep
+// parentheses, 2^(10^10), (a+b)^100000) is refused as an error, never a hang or a crash.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/rules.hpp"
+
+namespace {
+
+std::string data(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/" + rel; }
+
+struct Expected {
+  const char* file;
+  int line, col;
+  const char* message;   // a substring of the message
+};
+
+dc::InputError load_error(const std::string& path) {
+  try {
+    dc::load_derivation(path);
+  } catch (const dc::InputError& e) {
+    return e;
+  }
+  FAIL("no error for " << path);
+  throw;
+}
+
+}  // namespace
+
+TEST_CASE("malformed files give positioned errors saying what was expected", "[format][errors]") {
+  auto x = GENERATE(values<Expected>({
+      {"unknown_statement", 2, 1, "unknown statement 'symbl'; expected one of title, section, symbol"},
+      {"duplicate_label", 4, 1, "duplicate label 'a' (first defined at 2:1)"},
+      {"later_label", 3, 16, "step 'b' is defined later (at 4:1)"},
+      {"unknown_label", 3, 16, "unknown label 'nowhere'"},
+      {"unknown_rule", 3, 8, "unknown rule 'magic'; known rules: given, definition, rewrite"},
+      {"malformed_symbol", 1, 10, "expected ':' and a domain"},
+      {"unknown_unit", 1, 18, "unknown unit 'kgs'"},
+      {"undefined_symbol", 2, 8, "undefined symbol 'y'"},
+      {"contradictory", 2, 1, "the assumptions cannot all hold"},
+      {"contradictory_domain", 2, 1, "the assumptions cannot all hold"},
+      {"missing_rule", 2, 1, "has no rule: expected an indented line 'by RULE"},
+      {"indented_start", 1, 5, "unexpected indented line"},
+      {"unterminated_string", 1, 7, "unterminated string"},
+      {"unbalanced", 2, 14, "expected ')' to close '(' opened at 2:8"},
+      {"huge_power", 2, 10, "too large"},
+      {"huge_expand", 2, 13, "too large"},
+      {"expand_call", 2, 5, "expand"},
+      {"solve_without_refs", 3, 14, "expected the labels of the equations to solve"},
+      {"redeclared", 2, 8, "already declared at 1:8"},
+      {"empty_domain", 1, 15, "is empty"},
+  }));
+  std::string path = data(std::string("errors/") + x.file + ".dc");
+  dc::InputError e = load_error(path);
+  std::string formatted = e.format();
+  CAPTURE(x.file, formatted);
+  CHECK(e.pos().file == path);
+  CHECK(e.pos().line == x.line);
+  CHECK(e.pos().col == x.col);
+  CHECK(e.message().find(x.message) != std::string::npos);
+  // GCC style with the offending line and a caret; no internals
+  CHECK(formatted.rfind(path + ":" + std::to_string(x.line) + ":" + std::to_string(x.col) + ": error: ", 0) == 0);
+  CHECK(formatted.find('^') != std::string::npos);
+  CHECK(formatted.find("GiNaC") == std::string::npos);
+  CHECK(formatted.find(".cpp") == std::string::npos);
+}
+
+TEST_CASE("a missing file is an input error naming the file", "[format][errors]") {
+  dc::InputError e = load_error(data("errors/does_not_exist.dc"));
+  CHECK(e.message().find("cannot read") != std::string::npos);
+  CHECK(e.message().find("does_not_exist.dc") != std::string::npos);
+}
+
+TEST_CASE("10^5-deep parentheses are refused with a position", "[format][limits]") {
+  std::string claim = std::string(100000, '(') + "x" + std::string(100000, ')');
+  dc::SourceText src{"deep.dc", "symbol x : real [1]\na: x = " + claim + "\n    by given\n"};
+  try {
+    dc::parse_derivation(src);
+    FAIL("accepted 10^5-deep parentheses");
+  } catch (const dc::InputError& e) {
+    CHECK(e.pos().line == 2);
+    CHECK(e.pos().col >= 4);
+    CHECK(e.format().size() < 2000);   // the quoted line is cut around the column
+  }
+}
+
+TEST_CASE("100000 unary minus signs are refused", "[format][limits]") {
+  dc::SourceText src{"minus.dc", "symbol x : real [1]\na: x = " + std::string(100000, '-') + "x\n    by given\n"};
+  CHECK_THROWS_AS(dc::parse_derivation(src), dc::InputError);
+}
+
+TEST_CASE("the reader keeps positions across continuation lines", "[format]") {
+  dc::SourceText src{"cont.dc",
+                     "symbol m1, m2 : positive [kg]   # masses\n"
+                     "symbol v1, v2 : real [m/s]\n"
+                     "(9.6) total: m1*v1 +\n"
+                     "        m2*v2 = m1*v1 + m2*v2\n"
+                     "    by rewrite\n"
+                     "    note \"continued # not a comment\"\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  REQUIRE(d.steps.size() == 1);
+  const dc::Step& s = d.steps[0];
+  CHECK(s.tag == "9.6");
+  CHECK(s.label == "total");
+  CHECK(s.pos.col == 7);
+  CHECK(s.claim_pos.line == 3);
+  CHECK(s.claim_pos.col == 14);
+  CHECK(s.claim_text == "m1*v1 + m2*v2 = m1*v1 + m2*v2");
+  REQUIRE(s.claim.sides.size() == 2);
+  CHECK(s.claim.sides[1].pos.line == 4);
+  CHECK(s.claim.sides[1].pos.col == 17);
+  REQUIRE(s.notes.size() == 1);
+  CHECK(s.notes[0] == "continued # not a comment");
+  CHECK(s.rule.name == "rewrite");
+}
+
+TEST_CASE("rule lines are parsed into their argument groups", "[format][rules]") {
+  dc::SourceText src{"args.dc",
+                     "symbol m1, m2 : positive [kg]\n"
+                     "symbol v1, v2, v1p : real [m/s]\n"
+                     "a: v1p = (m1 - m2)*v1/(m1 + m2) + v2\n"
+                     "    by given\n"
+                     "b: v1p = -v1\n"
+                     "    by limit m2 -> oo of a with v2 = 0\n"
+                     "c: v1p = -v1 + v2\n"
+                     "    by simplify a, b with m1 = 0\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  const dc::RuleSpec& b = d.find("b")->rule;
+  CHECK(b.name == "limit");
+  REQUIRE(b.var);
+  CHECK(b.var->label == "m2");
+  REQUIRE(b.point);
+  CHECK(b.point->value.text == "oo");
+  REQUIRE(b.into.size() == 1);
+  CHECK(b.into[0].label == "a");
+  REQUIRE(b.with.size() == 1);
+  CHECK(b.with[0].kind == dc::RuleArg::Kind::Equation);
+  const dc::RuleSpec& c = d.find("c")->rule;
+  CHECK(c.name == "rewrite");
+  CHECK(c.written_name == "simplify");
+  REQUIRE(c.refs.size() == 2);
+  CHECK(c.refs[1].label == "b");
+  CHECK(c.refs[1].pos.col == 20);
+}
+
+TEST_CASE("formula() hands final formulas to the numeric module", "[format][formula]") {
+  dc::Derivation d = dc::load_derivation(data("rules/substitute.dc"));
+  dc::Formula f = dc::formula(d, "ok_substitute");
+  CHECK(f.target == "v1p");
+  CHECK(f.params.size() == 4);   // m1, m2, v1, v2 in declaration order
+  CHECK(f.params[0].get_name() == "m1");
+  CHECK_THROWS_AS(dc::formula(d, "nowhere"), dc::InputError);
+  CHECK(dc::formulas(d).size() >= 3);
+}
