@@ -23,6 +23,7 @@ struct SimulateOptions {
   std::vector<std::string> sets;
   std::string method;
   double step = 0;
+  bool step_given = false;
   double tol = 1e-10;
   std::string csv, pgfplots, gnuplot, png;
   bool list = false, describe = false, markdown = false, time = false;
@@ -55,19 +56,19 @@ int run(const SimulateOptions& o) {
   const Params p = resolve(spec, o.sets);
   RunOptions opt;
   opt.method = o.method.empty() ? spec.default_method : parse_method(o.method);
-  opt.h = o.step;
+  opt.h = o.step_given ? o.step : 0;  // 0: the scene's default step
   opt.tol = o.tol;
   // closed forms from the derivation files when they are there (else the built-in copies)
   if (std::filesystem::is_directory(o.derivations)) opt.derivations = o.derivations;
   else if (o.derivations_given) throw std::invalid_argument("simulate: --derivations '" + o.derivations + "' is not a directory");
   if (!o.method.empty() && spec.methods.empty())
     throw std::invalid_argument(spec.name + ": this scene has no integrator (exact events / linear algebra); drop --method");
-  if (o.step != 0 && spec.methods.empty())
+  if (o.step_given && spec.methods.empty())
     throw std::invalid_argument(spec.name + ": this scene has no time step; drop --step");
-  if (o.step != 0 || !spec.methods.empty()) {
+  if (!spec.methods.empty()) {
     RunOptions check = opt;
-    if (check.h == 0) check.h = spec.default_h;
-    check_run_options(spec, check);
+    if (!o.step_given) check.h = spec.default_h;
+    check_run_options(spec, check);  // a given step must be > 0: --step 0 is an error, not "default"
   }
   const auto t0 = std::chrono::steady_clock::now();
   const SceneResult r = run_scene(spec, p, opt);
@@ -132,7 +133,8 @@ const CommandRegistrar registrar{
       sub.add_flag("--markdown", o->markdown, "like --describe (or --list) as Markdown, for docs/scenes.md");
       sub.add_option("--set", o->sets, "override a parameter: NAME=VALUE (repeatable; VALUE may be a/b)")->take_all();
       sub.add_option("--method", o->method, "integrator: euler, rk4, dopri5, verlet, rosenbrock (default: the scene's)");
-      sub.add_option("--step", o->step, "time step [s] (dopri5: output spacing); default: the scene's");
+      sub.add_option("--step", o->step, "time step [s] (dopri5: output spacing); default: the scene's")
+          ->each([o](const std::string&) { o->step_given = true; });
       sub.add_option("--tol", o->tol, "dopri5 absolute and relative tolerance (default 1e-10)");
       sub.add_option("--derivations", o->derivations,
                      "directory of the handout's derivation files whose formulas are the closed forms "
