@@ -500,7 +500,8 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
   } catch (const std::exception& e) {
     return error("the claim could not be evaluated (symbolic computation failed)");
   }
-  for (auto& [k, val] : verdict_json(v).items()) out[k] = val;
+  nlohmann::ordered_json vj = verdict_json(v);
+  for (auto& [k, val] : vj.items()) out[k] = val;
   out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

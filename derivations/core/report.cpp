@@ -230,7 +230,8 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
       if (s.erratum) {
         j["erratum"] = {{"why", s.erratum->why}, {"corrected", s.erratum->corrected_text}};
       }
-      for (auto& [k, v] : verdict_json(r.verdict).items()) j[k] = v;
+      nlohmann::ordered_json vj = verdict_json(r.verdict);
+      for (auto& [k, v] : vj.items()) j[k] = v;
       j["derived"] = r.derived;
       j["dimension"] = r.dimension;
       nlohmann::ordered_json errs = nlohmann::ordered_json::array();

@@ -1,0 +1,127 @@
+// One-off claims: the labelled corpus (tests/data/corpus.jsonl, first-year dynamics, true and
+// realistically wrong) must be judged right claim by claim; malformed lines and assumption
+// lists are input errors with positions.
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "derivations/core/claims.hpp"
+
+namespace {
+std::string data(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/" + rel; }
+}  // namespace
+
+TEST_CASE("the labelled claim corpus is judged right, claim by claim", "[claims][corpus]") {
+  std::ifstream in(data("corpus.jsonl"));
+  REQUIRE(in);
+  std::string line;
+  int n = 0, holds = 0, refuted = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    nlohmann::json claim = nlohmann::json::parse(line);
+    std::string expected = claim.at("expected");
+    nlohmann::ordered_json r = dc::check_claim_line(line, n, "corpus.jsonl");
+    std::string verdict = r.value("verdict", "");
+    CAPTURE(n, claim.at("id").get<std::string>(), expected, r.dump());
+    CHECK(r.at("id") == claim.at("id"));
+    if (expected == "holds") {
+      ++holds;
+      CHECK((verdict == "proved" || verdict == "holds_numerically"));
+    } else {
+      REQUIRE(expected == "refuted");
+      ++refuted;
+      CHECK(verdict == "refuted");
+    }
+  }
+  CHECK(n >= 40);
+  CHECK(holds >= 20);
+  CHECK(refuted >= 20);
+}
+
+TEST_CASE("a refuted claim carries its counterexample", "[claims]") {
+  auto r = dc::check_claim_line(
+      R"J({"id":"c7","kind":"equal","lhs":"(m1*v1+m2*v2)/(m1+m2)","rhs":"v1","assumptions":{"m1":"positive","m2":"positive"}})J",
+      1, "bank.jsonl");
+  CHECK(r.at("verdict") == "refuted");
+  CHECK(r.at("counterexample").is_object());
+  CHECK(r.at("counterexample").size() >= 2);
+  CHECK(r.contains("seconds"));
+  // key order is stable: id, kind, verdict, method first
+  auto it = r.begin();
+  CHECK(it.key() == "id");
+  ++it;
+  CHECK(it.key() == "kind");
+  ++it;
+  CHECK(it.key() == "verdict");
+}
+
+TEST_CASE("malformed claim lines are errors with their line number", "[claims][errors]") {
+  struct Bad {
+    const char* line;
+    const char* message;
+  };
+  auto b = GENERATE(values<Bad>({
+      {R"J({"id":1,"kind":"equal","lhs":"x+")J", "malformed JSON"},
+      {R"J([1,2])J", "expected a JSON object"},
+      {R"J({"id":"a","lhs":"x","rhs":"x"})J", "missing field 'kind'"},
+      {R"J({"id":"a","kind":"integral","lhs":"x","rhs":"x"})J", "unknown kind 'integral'"},
+      {R"J({"id":"a","kind":"equal","lhs":"x"})J", "missing field 'rhs'"},
+      {R"J({"id":"a","kind":"equal","lhs":"x+*y","rhs":"x"})J", "in field 'lhs' (column 3)"},
+      {R"J({"id":"a","kind":"equal","lhs":"x","rhs":"x","assumptions":{"x":"sideways"}})J", "in assumption 'x'"},
+      {R"J({"id":"a","kind":"limit","lhs":"x","rhs":"0","var":"x"})J", "missing field 'point'"},
+      {R"J({"id":"a","kind":"equal","lhs":"2^(10^10)","rhs":"1"})J", "too large"},
+      {R"J({"id":"a","kind":"equal","lhs":"x","rhs":"x","assumptions":{"x":"in [2, 1]"}})J", "empty"},
+  }));
+  auto r = dc::check_claim_line(b.line, 7, "bank.jsonl");
+  CAPTURE(b.line, r.dump());
+  CHECK(r.at("verdict") == "error");
+  CHECK(r.at("line") == 7);
+  std::string err = r.at("error");
+  CHECK(err.rfind("bank.jsonl:7: error: ", 0) == 0);
+  CHECK(err.find(b.message) != std::string::npos);
+}
+
+TEST_CASE("equal: assumption lists give domains and constraints", "[claims][equal]") {
+  CHECK(dc::check_equal("sqrt(x^2)", "x", "x>0").holds());
+  CHECK(dc::check_equal("sqrt(x^2)", "x", "x real").kind == dc::VerdictKind::Refuted);
+  CHECK(dc::check_equal("sqrt(x^2)", "x", "").kind == dc::VerdictKind::Refuted);   // undeclared: real
+  CHECK(dc::check_equal("abs(v1 - v2)", "v1 - v2", "v1 > v2").holds());
+  CHECK(dc::check_equal("acos(1-2*z^2)", "2*asin(z)", "z in [0,1]").holds());
+  CHECK(dc::check_equal("(m1*v1+m2*v2)/(m1+m2)", "v", "m1>0, m2>0, e in [0,1]").kind == dc::VerdictKind::Refuted);
+}
+
+TEST_CASE("equal: malformed or contradictory assumption lists are input errors", "[claims][equal][errors]") {
+  struct Bad {
+    const char* lhs;
+    const char* rhs;
+    const char* assume;
+    const char* file;
+    int col;
+    const char* message;
+  };
+  auto b = GENERATE(values<Bad>({
+      {"x", "x", "x > 0, x < 0", "<assume>", 8, "conflicting assumptions"},
+      {"x", "x", "x > y, y > x", "<assume>", 1, "cannot all hold"},
+      {"x", "x", "x sideways", "<assume>", 3, "sideways"},
+      {"x", "x", "x", "<assume>", 2, "expected a domain after 'x'"},
+      {"x", "x", "x = 1", "<assume>", 3, "'=' is not an assumption"},
+      {"x", "x", "m1>0,, m2>0", "<assume>", 6, "expected an assumption"},
+      {"x +", "x", "", "<lhs>", 4, ""},
+      {"x", "(x", "", "<rhs>", 3, "expected ')'"},
+      {"x", "x", "e in [1, 0]", "<assume>", 6, "empty"},
+  }));
+  CAPTURE(b.lhs, b.rhs, b.assume);
+  try {
+    dc::check_equal(b.lhs, b.rhs, b.assume);
+    FAIL("accepted");
+  } catch (const dc::InputError& e) {
+    CAPTURE(e.format());
+    CHECK(e.pos().file == b.file);
+    CHECK(e.pos().col == b.col);
+    CHECK(e.message().find(b.message) != std::string::npos);
+    CHECK(e.format().find('^') != std::string::npos);
+  }
+}
