@@ -75,7 +75,9 @@ std::string verdict_evidence(const Verdict& v, const std::string& indent) {
       out += indent + "left side = " + v.lhs_value + ", right side = " + v.rhs_value + "\n";
   }
   if (v.kind == VerdictKind::Undecided && !v.residual.empty()) out += indent + "residual: " + v.residual + "\n";
-  if (!v.holds() && !v.detail.empty()) out += indent + v.detail + "\n";
+  // The prover's own "differs at ..." repeats the counterexample above; rule details (which
+  // link, what was eliminated) are kept.
+  if (!v.holds() && !v.detail.empty() && v.detail.rfind("differs at", 0) != 0) out += indent + v.detail + "\n";
   return out;
 }
 

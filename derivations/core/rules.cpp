@@ -322,6 +322,7 @@ class Checker {
       collect_symbols(num, cands);
       ex hint = atoms_(q.hint);
       long best_score = -1;
+      std::string best_key;
       ex best, best_value;
       bool best_is_function = false;
       auto consider = [&](const ex& c, bool is_function) {
@@ -339,7 +340,11 @@ class Checker {
         if (is_function || real_domain(c)) score += 20;
         if (GiNaC::is_a<GiNaC::numeric>(coef)) score += 10;
         score = score * 100 + std::max(0, declaration_index(c)) % 100;
-        if (score > best_score) {
+        // Ties are broken by the deterministic text of the candidate: GiNaC's traversal
+        // order (and so the order of `cands`) changes from process to process.
+        std::string key = text(atoms_.restore(c));
+        if (score > best_score || (score == best_score && key < best_key)) {
+          best_key = key;
           best_score = score;
           best = c;
           best_value = value;
