@@ -223,8 +223,7 @@ class Parser {
     for (const Token& t : toks_) {
       if (t.kind == Tok::LParen) {
         if (++depth > max_depth_)
-          fail(t, "parentheses nested more than " + std::to_string(max_depth_) + " deep (limit " +
-                      std::to_string(max_depth_) + ")");
+          fail(t, "parentheses nested too deeply (limit " + std::to_string(max_depth_) + ")");
       } else if (t.kind == Tok::RParen && depth > 0) {
         --depth;
       }
@@ -233,8 +232,7 @@ class Parser {
 
   void enter(const Token& t) {
     if (++nest_ > max_depth_)
-      fail(t, "expression nested more than " + std::to_string(max_depth_) + " deep (limit " +
-                  std::to_string(max_depth_) + ")");
+      fail(t, "expression nested too deeply (limit " + std::to_string(max_depth_) + ")");
   }
   void leave(int k = 1) { nest_ -= k; }
 

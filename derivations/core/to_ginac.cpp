@@ -322,7 +322,16 @@ class Converter {
                            n.args[2].length);
       }
       GiNaC::ex body = conv(n.args[0]);
-      LimitResult r = compute_limit(body, xs, point, at_inf, table_);
+      LimitResult r;
+      try {
+        r = compute_limit(body, xs, point, at_inf, table_);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception&) {
+        // The helper reports failures as !ok; anything thrown is GiNaC's, whose text names
+        // its internals, so it is not passed on.
+        throw UndecidedLimit("the limit helper could not evaluate '" + short_text(n) + "'", n.pos);
+      }
       if (!r.ok) throw UndecidedLimit(r.reason.empty() ? "limit undecided" : r.reason, n.pos);
       if (r.infinite != 0)
         throw InputError(n.pos,

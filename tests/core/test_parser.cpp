@@ -143,6 +143,20 @@ TEST_CASE("relations: chains of '='", "[parser]") {
   CHECK(r.sides[2].pos.col == 11);
   CHECK(to_text(r) == "F = m*a = diff(p, t)");
   Relation single = parse_relation("x + 1", kOrigin);
+  try {
+    parse_relation("a == b", kOrigin);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.pos().col == 4);
+    CHECK(e.message() == "expected an expression after '=', found '=' (write a single '=')");
+  }
+  try {
+    parse_relation("a = b < c", kOrigin);
+    FAIL("no error");
+  } catch (const InputError& e) {
+    CHECK(e.pos().col == 7);
+    CHECK(e.message() == "unexpected character '<'");
+  }
   CHECK_FALSE(single.is_equation());
 }
 
@@ -291,7 +305,7 @@ TEST_CASE("limits: 10^5 nested parentheses give an error, not a stack overflow",
   lim.max_length = 300000;
   InputError e = parse_error(s, lim);
   CHECK(e.pos().col == 201);  // the first '(' beyond the default depth of 200
-  CHECK_THAT(e.message(), Catch::Contains("nested more than 200 deep"));
+  CHECK_THAT(e.message(), Catch::Contains("nested too deeply (limit 200)"));
   // Unbalanced: 10^5 '(' and nothing else.
   InputError e2 = parse_error(std::string(100000, '('));
   CHECK(e2.pos().col == 201);
@@ -312,7 +326,7 @@ TEST_CASE("limits: 20000 unary minuses count as nesting", "[parser][limits]") {
   s += "x";
   InputError e = parse_error(s);
   CHECK(e.pos().col == 201);
-  CHECK_THAT(e.message(), Catch::Contains("nested more than 200 deep"));
+  CHECK_THAT(e.message(), Catch::Contains("nested too deeply (limit 200)"));
   // 200 are fine and give 200 nested Neg nodes.
   Node n = parse(std::string(200, '-') + "x");
   int depth = 0;
