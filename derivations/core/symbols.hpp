@@ -98,12 +98,12 @@ struct UndecidedLimit : std::runtime_error {
 // more than 10000 digits), 'oo' outside a limit point.
 // Calculus forms: diff(f,x[,n]) is carried out; limit(f,x,p) is evaluated with the limit
 // helper (an unevaluable limit throws UndecidedLimit); integral(f,x,a,b) cannot be converted
-// (throws InputError unless allow_integral, in which case it becomes an opaque placeholder).
+// (throws InputError: the 'integrate' rule handles integral(...) on the author's tree).
 GiNaC::ex to_ginac(const Node& n, const SymbolTable& table);
 
 // The dimension of an expression; throws InputError at the first inconsistent node, e.g.
-// "cannot add kg·m/s and kg·m²/s²" at the '+'. Symbols without a declared dimension throw
-// unless `lenient`, in which case they are treated as dimensionless.
+// "cannot add kg·m/s and kg·m²/s²" at the '+'. Symbols without a declared dimension
+// (has_dimension false) count as dimensionless; a literal 0 in a sum takes any dimension.
 Dimension dimension_of(const Node& n, const SymbolTable& table);
 
 }  // namespace dc
