@@ -1,0 +1,210 @@
+// CLI behaviour of `derivcheck check | equal | claims`: exit codes, GCC-style errors on bad
+// input, and byte-identical output across two processes (GiNaC's print order changes per
+// process, so this catches any leak of it). Runs the built binary DERIVCHECK_CLI.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace {
+
+std::string src(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/" + rel; }
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "'\\''";
+    else out += c;
+  }
+  return out + "'";
+}
+
+struct Run {
+  int exit_code = -1;
+  std::string out;   // stdout
+  std::string err;   // stderr
+};
+
+Run run(const std::vector<std::string>& args) {
+  static int counter = 0;
+  std::string errfile = "derivcheck_cli_test_stderr_" + std::to_string(++counter) + ".txt";
+  std::string cmd = quote(DERIVCHECK_CLI);
+  for (const auto& a : args) cmd += " " + quote(a);
+  cmd += " 2>" + errfile;
+  Run r;
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(errfile);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  std::remove(errfile.c_str());
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("check: exit codes", "[cli][check]") {
+  struct Case {
+    const char* file;
+    int exit_code;
+  };
+  auto c = GENERATE(values<Case>({
+      {"tests/data/cli/all_hold.dc", 0},
+      {"tests/data/cli/refuted.dc", 1},
+      {"tests/data/cli/dimension.dc", 1},
+      {"tests/data/cli/undecided.dc", 3},
+      {"tests/data/cli/erratum.dc", 0},
+      {"tests/data/errors/unknown_rule.dc", 2},
+      {"tests/data/errors/does_not_exist.dc", 2},
+  }));
+  CAPTURE(c.file);
+  Run r = run({"check", src(c.file)});
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == c.exit_code);
+  CHECK(r.out.find(" steps: ") != std::string::npos);
+}
+
+TEST_CASE("check --strict fails on reported errata", "[cli][check]") {
+  CHECK(run({"check", "--strict", src("tests/data/cli/erratum.dc")}).exit_code == 1);
+}
+
+TEST_CASE("check prints one line per step with position, mark, label, tag, rule and verdict", "[cli][check]") {
+  Run r = run({"check", src("tests/data/cli/refuted.dc")});
+  std::string f = src("tests/data/cli/refuted.dc");
+  CAPTURE(r.out);
+  CHECK(r.out.find(f + ":5:7: \u2713 momentum (9.6) given \u2014 proved (given)\n") != std::string::npos);
+  CHECK(r.out.find(f + ":9:1: \u2717 v1p_wrong solve \u2014 refuted") != std::string::npos);
+  CHECK(r.out.find("    counterexample: m1 = ") != std::string::npos);
+  CHECK(r.out.find("    left side = ") != std::string::npos);
+  CHECK(r.out.find("3 steps: 2 proved, 0 hold numerically, 1 refuted, 0 undecided, 0 errors (0 errata reported)\n") !=
+        std::string::npos);
+  CHECK(r.out.find(" ms]") == std::string::npos);   // no times without --timings
+  Run t = run({"check", "--timings", f});
+  CHECK(t.out.find(" ms]") != std::string::npos);
+}
+
+TEST_CASE("check: an input error is GCC style with the line and a caret", "[cli][check][errors]") {
+  std::string f = src("tests/data/errors/undefined_symbol.dc");
+  Run r = run({"check", f});
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.find(f + ":2:8: error: undefined symbol 'y'") != std::string::npos);
+  CHECK(r.out.find("    a: x = y + 1\n           ^\n") != std::string::npos);
+}
+
+TEST_CASE("check: runaway input is refused quickly with a positioned error", "[cli][check][errors]") {
+  auto f = GENERATE(as<std::string>{}, "huge_power", "huge_expand", "expand_call");
+  Run r = run({"check", src("tests/data/errors/" + f + ".dc")});
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.find(":2:") != std::string::npos);
+  CHECK(r.out.find("error: ") != std::string::npos);
+}
+
+TEST_CASE("check: a directory means its .dc files in sorted order", "[cli][check]") {
+  Run r = run({"check", src("tests/data/rules")});
+  CAPTURE(r.out);
+  auto a = r.out.find("rules/definition.dc:");
+  auto b = r.out.find("rules/differentiate.dc:");
+  auto c = r.out.find("rules/solves_ode.dc:");
+  REQUIRE(a != std::string::npos);
+  REQUIRE(b != std::string::npos);
+  REQUIRE(c != std::string::npos);
+  CHECK(a < b);
+  CHECK(b < c);
+  CHECK(r.exit_code == 1);   // the fixtures contain refuted bad_* steps
+}
+
+TEST_CASE("check --json carries the same content with a stable key order", "[cli][check][json]") {
+  Run r = run({"check", "--json", src("tests/data/cli/refuted.dc")});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.rfind("{\n  \"files\": [\n    {\n      \"file\": ", 0) == 0);
+  CHECK(r.out.find("\"verdict\": \"refuted\"") != std::string::npos);
+  CHECK(r.out.find("\"counterexample\": {") != std::string::npos);
+  CHECK(r.out.find("\"exit_code\": 1") != std::string::npos);
+  CHECK(r.out.find("\"seconds\"") == std::string::npos);
+}
+
+TEST_CASE("output is byte-identical across two processes", "[cli][determinism]") {
+  std::vector<std::vector<std::string>> commands = {
+      {"check", src("tests/data/rules"), src("tests/data/cli")},
+      {"check", "--json", src("tests/data/rules"), src("tests/data/cli")},
+      {"claims", "--no-timings", src("tests/data/corpus.jsonl")},
+      {"equal", "sqrt(x^2)", "x", "--assume", "x real"},
+  };
+  if (std::ifstream(src("derivations/handout9/05_direct_impact.dc"))) {
+    commands.push_back({"check", src("derivations/handout9")});
+    commands.push_back({"check", "--json", src("derivations/handout9")});
+  }
+  for (const auto& cmd : commands) {
+    CAPTURE(cmd);
+    Run a = run(cmd), b = run(cmd);
+    CHECK(a.out.size() > 0);
+    CHECK(a.out == b.out);
+    CHECK(a.exit_code == b.exit_code);
+  }
+}
+
+TEST_CASE("equal: verdicts and exit codes", "[cli][equal]") {
+  CHECK(run({"equal", "sqrt(x^2)", "x", "--assume", "x>0"}).exit_code == 0);
+  Run r = run({"equal", "sqrt(x^2)", "x", "--assume", "x real"});
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.rfind("refuted", 0) == 0);
+  CHECK(r.out.find("counterexample: x = -") != std::string::npos);
+  CHECK(run({"equal", "log(a*b)", "log(a)+log(b)", "--assume", "a>0, b>0"}).exit_code == 0);
+  CHECK(run({"equal", "exp(pi*sqrt(163))", "640320^3+744"}).exit_code == 1);
+}
+
+TEST_CASE("equal: malformed input is an error on stderr with exit 2", "[cli][equal][errors]") {
+  Run a = run({"equal", "x +", "x"});
+  CHECK(a.exit_code == 2);
+  CHECK(a.err.rfind("<lhs>:1:4: error: ", 0) == 0);
+  Run b = run({"equal", "x", "x", "--assume", "x > 0, x < 0"});
+  CHECK(b.exit_code == 2);
+  CHECK(b.err.rfind("<assume>:1:8: error: conflicting assumptions for 'x'", 0) == 0);
+  Run c = run({"equal", "x", "x", "--assume", "x > y, y > x"});
+  CHECK(c.exit_code == 2);
+  CHECK(c.err.find("cannot all hold") != std::string::npos);
+  Run d = run({"equal", "2^(10^10)", "1"});
+  CHECK(d.exit_code == 2);
+  CHECK(d.err.rfind("<lhs>:1:", 0) == 0);
+  // one argument may hold at most 128 KiB (MAX_ARG_STRLEN); 10^5 deep is tested on the library
+  std::string deep = std::string(30000, '(') + "x" + std::string(30000, ')');
+  Run e = run({"equal", deep, "x"});
+  CHECK(e.exit_code == 2);
+  CHECK(e.err.rfind("<lhs>:1:", 0) == 0);
+  CHECK(e.err.size() < 2000);
+}
+
+TEST_CASE("claims: one JSON result per line; a malformed line does not stop the rest", "[cli][claims]") {
+  Run r = run({"claims", "--no-timings", src("tests/data/cli/bank.jsonl")});
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 2);
+  std::istringstream in(r.out);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  REQUIRE(lines.size() == 4);
+  CHECK(lines[0] == "{\"id\":\"c7\",\"kind\":\"equal\",\"verdict\":\"proved\",\"method\":\"normal\",\"detail\":\"normal(lhs - rhs) = 0\"}");
+  CHECK(lines[1].find("\"line\":2,\"verdict\":\"error\"") != std::string::npos);
+  CHECK(lines[1].find("bank.jsonl:2: error: malformed JSON") != std::string::npos);
+  CHECK(lines[2].find("\"id\":\"c9\"") != std::string::npos);
+  CHECK(lines[2].find("\"verdict\":\"refuted\"") != std::string::npos);
+  CHECK(lines[3].find("\"id\":\"c10\"") != std::string::npos);
+  CHECK(lines[3].find("\"verdict\":\"proved\"") != std::string::npos);
+  Run t = run({"claims", src("tests/data/cli/bank.jsonl")});
+  CHECK(t.out.find("\"seconds\":") != std::string::npos);
+}
+
+TEST_CASE("claims: a missing file is an input error", "[cli][claims][errors]") {
+  Run r = run({"claims", src("tests/data/cli/nope.jsonl")});
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("cannot read") != std::string::npos);
+}
