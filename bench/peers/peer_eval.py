@@ -6,7 +6,7 @@ For each formula (FILE:LABEL, loaded from the derivation file by label):
      is not real are redrawn), written as raw little-endian float64, row-major N x k;
   2. NumPy: f = lambdify(inputs, expr, "numpy"); time f(*columns) over all N points (median
      of R repeats, min and max); 
-  3. derivcheck: `derivcheck chart evalpoints FILE LABEL --points P --out O --repeats R`
+  3. derivcheck: `derivcheck chart evalpoints FILE LABEL --points-file P --out-file O --repeats R`
      (the same points; the batch API of numeric/evaluator.hpp; also the hand-written C++
      function where the chart command has one) -- "not available yet" if the command fails;
   4. errors of both against a 50-digit mpmath reference on the first M points (ulps of double
@@ -110,7 +110,7 @@ def main():
         ofile = os.path.join(a.tmp, f"peer_out_{label}.bin")
         pts.astype("<f8").tofile(pfile)
         cmd = [a.cli, "chart", "evalpoints", path, label, "--inputs", ",".join(row["inputs"]),
-               "--points", pfile, "--out", ofile, "--repeats", str(a.repeats)]
+               "--points-file", pfile, "--out-file", ofile, "--repeats", str(a.repeats)]
         try:
             r = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
             if r.returncode != 0:

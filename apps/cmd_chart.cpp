@@ -1,0 +1,275 @@
+// `derivcheck chart KIND`: work-precision data and stability maps as CSV, PNG, SVG and pgfplots
+// (docs/charts.md). All measuring lives in numeric/chart_data.cpp, all drawing in
+// numeric/chart_plot.cpp; this file parses options, picks files and names.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.hpp"
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/io.hpp"
+#include "numeric/chart_data.hpp"
+#include "numeric/chart_plot.hpp"
+#include "numeric/evaluator.hpp"
+
+namespace {
+
+using namespace dc::chart;
+
+struct ChartArgs {
+  std::string kind;
+  std::vector<std::string> formulas;
+  std::string scenes = "spring,pendulum,rocket,ladder";
+  std::string maps = "e_to_1,v1_to_v2,mu_to_0,m2_to_inf,theta_to_0,mr_to_m0";
+  int points = 64, repeats = 5, sweep = 8, steps = 40;
+  std::string out = "docs/charts", root = ".", csv;
+  // evalpoints
+  std::vector<std::string> positional;
+  std::string inputs, points_file, out_file;
+  bool no_figures = false;
+};
+
+std::vector<std::string> split(const std::string& s, char c = ',') {
+  std::vector<std::string> v;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, c))
+    if (!cur.empty()) v.push_back(cur);
+  return v;
+}
+
+std::string slug(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return s;
+}
+
+void say_written(const std::vector<std::string>& files) {
+  for (const auto& f : files) std::cout << "wrote " << f << "\n";
+}
+
+// --- closed forms --------------------------------------------------------------------------------
+int run_closed(const ChartArgs& a) {
+  std::vector<std::string> specs = a.formulas;
+  if (specs.empty())
+    specs = {a.root + "/derivations/handout9/05_direct_impact.dc:v1p_general",
+             a.root + "/derivations/handout9/05_direct_impact.dc:energy_loss_general",
+             a.root + "/derivations/handout9/06_ballistic_pendulum.dc:deflection",
+             a.root + "/derivations/handout9/07_two_ball_bounce.dc:v1p_bounce",
+             a.root + "/derivations/handout9/03_ladder.dc:wall_impulse"};
+  ClosedOptions o;
+  o.points = a.points, o.repeats = a.repeats;
+  std::vector<WpRow> all;
+  for (const auto& s : specs) {
+    const auto colon = s.rfind(':');
+    if (colon == std::string::npos) throw std::invalid_argument("--formula expects FILE:LABEL, got '" + s + "'");
+    auto rows = closed_form_wp(s.substr(0, colon), s.substr(colon + 1), o);
+    if (!a.no_figures) {
+      Plot p;
+      p.title = "Work-precision: " + rows.front().formula;
+      p.xlabel = "max relative error vs 100-digit reference (exact: 1e-110)";
+      p.ylabel = "time per evaluation [s]";
+      for (const auto& r : rows)
+        p.series.push_back({r.method, {{std::max(r.rel_err_max, 1e-110), r.seconds.median, r.seconds.min, r.seconds.max}}, true, false});
+      say_written(write_figures(p, a.out + "/wp_closed_" + slug(s.substr(colon + 1))));
+    }
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  const std::string csv = a.csv.empty() ? a.out + "/wp_closed.csv" : a.csv;
+  dc::write_file_atomic(csv, to_table(all).to_csv());
+  say_written({csv});
+  return 0;
+}
+
+// --- scenes ----------------------------------------------------------------------------------------
+int run_scenes(const ChartArgs& a) {
+  SceneOptions o;
+  o.repeats = a.repeats, o.sweep = a.sweep;
+  std::vector<SceneRow> all;
+  for (const auto& scene : split(a.scenes)) {
+    auto rows = scene_wp(scene, o);
+    if (!a.no_figures && a.csv.empty()) {
+      std::map<std::string, PlotSeries> by_method, drift;
+      for (const auto& r : rows) {
+        auto& s = by_method[r.method];
+        s.name = r.method, s.bars = true;
+        s.points.push_back({r.rel_error, r.seconds.median, r.seconds.min, r.seconds.max});
+        if (r.drift >= 0) {
+          auto& d = drift[r.method];
+          d.name = r.method, d.bars = true;
+          d.points.push_back({r.drift, r.seconds.median, r.seconds.min, r.seconds.max});
+        }
+      }
+      Plot p;
+      p.title = "Work-precision: scene " + scene + " (" + scene_quantity(scene) + ")";
+      p.xlabel = "relative error of " + scene_quantity(scene) + " vs closed form";
+      p.ylabel = "wall time per run [s]";
+      for (auto& [m, s] : by_method) p.series.push_back(s);
+      say_written(write_figures(p, a.out + "/wp_scene_" + scene));
+      if (!drift.empty()) {
+        Plot q = p;
+        q.title = "Work-precision: scene " + scene + ", energy drift";
+        q.xlabel = "max relative energy drift";
+        q.series.clear();
+        for (auto& [m, s] : drift) q.series.push_back(s);
+        say_written(write_figures(q, a.out + "/wp_scene_drift_" + scene));
+      }
+    }
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  const std::string csv = a.csv.empty() ? a.out + "/wp_scenes.csv" : a.csv;
+  dc::write_file_atomic(csv, to_table(all).to_csv());
+  if (a.csv.empty()) say_written({csv});
+  return 0;
+}
+
+// --- stability maps ------------------------------------------------------------------------------------
+int run_maps(const ChartArgs& a) {
+  std::vector<MapRow> all;
+  for (const auto& name : split(a.maps)) {
+    auto rows = closed_form_map(a.root, name, a.steps);
+    const auto& infos = closed_form_maps();
+    auto info = std::find_if(infos.begin(), infos.end(), [&](const MapInfo& m) { return m.name == name; });
+    if (!a.no_figures) {
+      std::map<std::string, PlotSeries> by;
+      std::vector<std::string> order;
+      for (const auto& r : rows) {
+        if (!by.count(r.method)) order.push_back(r.method);
+        auto& s = by[r.method];
+        s.name = r.method;
+        s.points.push_back({r.stress, r.bits_lost, 0, 0});
+      }
+      Plot p;
+      p.title = "Stability map: " + info->title;
+      p.xlabel = info->xlabel;
+      p.ylabel = "bits lost (of 53)";
+      p.logy = false;
+      for (const auto& m : order) p.series.push_back(by[m]);
+      say_written(write_figures(p, a.out + "/map_" + name));
+    }
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  dc::write_file_atomic(a.out + "/map_closed.csv", to_table(all).to_csv());
+  say_written({a.out + "/map_closed.csv"});
+
+  const auto stiff = stiff_spring_map(5000, std::max(2, a.steps / 2), 3.2);
+  if (!a.no_figures) {
+    std::map<std::string, PlotSeries> by;
+    for (const auto& r : stiff) {
+      auto& s = by[r.method];
+      s.name = r.method;
+      s.points.push_back({r.omega_h, std::min(r.max_position_error, 1e300), 0, 0});
+    }
+    Plot p;
+    p.title = "Stability map: stiff spring (k = 5000 N/m, Example 9.3 masses), 32 periods";
+    p.xlabel = "omega h (step times angular frequency) [1]";
+    p.ylabel = "max position error vs exact solution [m]";
+    p.logx = false;
+    p.vlines = {{2.0, "verlet limit 2"}, {2.8284, "rk4 limit 2.83"}};
+    for (auto& [m, s] : by) p.series.push_back(s);
+    say_written(write_figures(p, a.out + "/map_stiff_spring"));
+  }
+  dc::write_file_atomic(a.out + "/map_stiff_spring.csv", to_table(stiff).to_csv());
+  say_written({a.out + "/map_stiff_spring.csv"});
+  return 0;
+}
+
+// --- evalpoints: the peers' evaluator timing (bench/peers/peer_eval.py) -----------------------------
+int run_evalpoints(const ChartArgs& a) {
+  if (a.positional.size() != 2) throw std::invalid_argument("chart evalpoints FILE LABEL --inputs ... --points P --out O");
+  const auto d = dc::load_derivation(a.positional[0]);
+  const auto f = dc::formula(d, a.positional[1]);
+  const auto names = split(a.inputs);
+  const PlainFormula pf = plain_formula(d, f.expr);
+  std::vector<GiNaC::symbol> syms;
+  for (const auto& n : names) {
+    auto it = std::find(pf.names.begin(), pf.names.end(), n);
+    if (it == pf.names.end()) throw std::invalid_argument("--inputs: " + n + " is not a parameter of " + f.label);
+    syms.push_back(pf.inputs[static_cast<std::size_t>(it - pf.names.begin())]);
+  }
+  if (syms.size() != pf.inputs.size()) throw std::invalid_argument("--inputs must list every parameter of " + f.label);
+  std::vector<double> flat;
+  {
+    std::ifstream in2(a.points_file, std::ios::binary | std::ios::ate);
+    if (!in2) throw std::invalid_argument("cannot read --points-file '" + a.points_file + "'");
+    const auto bytes = static_cast<std::size_t>(in2.tellg());
+    in2.seekg(0);
+    flat.resize(bytes / sizeof(double));
+    in2.read(reinterpret_cast<char*>(flat.data()), static_cast<std::streamsize>(flat.size() * sizeof(double)));
+  }
+  const std::size_t k = syms.size(), n = flat.size() / k;
+  if (n == 0 || flat.size() % k) throw std::invalid_argument("--points: size is not a multiple of " + std::to_string(k) + " doubles");
+  std::vector<std::vector<double>> cols(k, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < k; ++j) cols[j][i] = flat[i * k + j];
+  std::vector<const double*> cp;
+  for (auto& c : cols) cp.push_back(c.data());
+  const dc::num::Evaluator<double> ev(dc::num::compile(pf.expr, syms));
+  std::vector<double> out(n);
+  const Stat t = time_per_op([&] { ev.eval_batch(cp.data(), out.data(), n); }, static_cast<long>(n), a.repeats);
+  nlohmann::json j;
+  j["evals_per_s"] = 1 / t.median;
+  j["ns_per_eval"] = {{"median", t.median * 1e9}, {"min", t.min * 1e9}, {"max", t.max * 1e9}};
+  j["points"] = n;
+  j["method"] = "Evaluator<double>::eval_batch";
+  if (hand_written(f.label, names)) {
+    std::vector<double> hout(n);
+    const Stat h = time_per_op([&] { hand_written_batch(f.label, names, cp.data(), hout.data(), n); },
+                               static_cast<long>(n), a.repeats);
+    j["handwritten_evals_per_s"] = 1 / h.median;
+    j["handwritten_ns_per_eval"] = {{"median", h.median * 1e9}, {"min", h.min * 1e9}, {"max", h.max * 1e9}};
+  }
+  std::string bytes(reinterpret_cast<const char*>(out.data()), out.size() * sizeof(double));
+  dc::write_file_atomic(a.out_file, bytes);
+  std::cout << j.dump() << "\n";
+  return 0;
+}
+
+const dc::cli::CommandRegistrar reg(
+    "chart", "work-precision charts and stability maps: CSV, PNG, SVG, pgfplots (docs/charts.md)",
+    [](CLI::App& sub) -> std::function<int()> {
+      auto a = std::make_shared<ChartArgs>();
+      sub.add_option("kind", a->kind, "closed | scenes | maps | all | evalpoints")
+          ->required()
+          ->check(CLI::IsMember({"closed", "scenes", "maps", "all", "evalpoints"}));
+      sub.add_option("args", a->positional, "evalpoints: FILE LABEL");
+      sub.add_option("--formula", a->formulas, "closed: FILE:LABEL (repeatable; default: five handout formulas)");
+      sub.add_option("--scenes", a->scenes, "scenes: comma-separated scene names")->capture_default_str();
+      sub.add_option("--maps", a->maps, "maps: comma-separated map names")->capture_default_str();
+      sub.add_option("--points", a->points, "closed: random points per formula")->capture_default_str()->check(CLI::PositiveNumber);
+      sub.add_option("--repeats", a->repeats, "timing repeats (median, min, max)")->capture_default_str()->check(CLI::PositiveNumber);
+      sub.add_option("--sweep", a->sweep, "scenes: steps/tolerances per integrator")->capture_default_str()->check(CLI::PositiveNumber);
+      sub.add_option("--steps", a->steps, "maps: points along the stress axis")->capture_default_str()->check(CLI::Range(2, 100000));
+      sub.add_option("--out", a->out, "output directory")->capture_default_str();
+      sub.add_option("--root", a->root, "project root (for derivations/handout9)")->capture_default_str();
+      sub.add_option("--csv", a->csv, "write only this CSV (no figures)");
+      sub.add_flag("--no-figures", a->no_figures, "CSV only");
+      sub.add_option("--inputs", a->inputs, "evalpoints: parameter order of the points file");
+      sub.add_option("--points-file", a->points_file, "evalpoints: raw float64 points, row-major");
+      sub.add_option("--out-file", a->out_file, "evalpoints: raw float64 results");
+      return [a]() -> int {
+        try {
+          if (a->kind == "closed") return run_closed(*a);
+          if (a->kind == "scenes") return run_scenes(*a);
+          if (a->kind == "maps") return run_maps(*a);
+          if (a->kind == "evalpoints") return run_evalpoints(*a);
+          run_closed(*a);
+          run_scenes(*a);
+          return run_maps(*a);
+        } catch (const std::invalid_argument& e) {
+          std::cerr << "derivcheck chart: error: " << e.what() << "\n";
+          return dc::cli::kExitInputError;
+        } catch (const std::domain_error& e) {
+          std::cerr << "derivcheck chart: error: " << e.what() << "\n";
+          return dc::cli::kExitInputError;
+        }
+      };
+    });
+
+}  // namespace

@@ -1,0 +1,686 @@
+// Measurements behind the work-precision charts and stability maps (see chart_data.hpp).
+#include "numeric/chart_data.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/functions.hpp"
+#include "derivations/core/prove.hpp"
+#include "numeric/evaluator.hpp"
+#include "numeric/exact.hpp"
+#include "numeric/reference.hpp"
+#include "numeric/scenes/closed_forms.hpp"
+#include "numeric/scenes/scenes.hpp"
+#include "numeric/scenes/spec.hpp"
+
+namespace dc::chart {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+Stat stat_of(std::vector<double> v) {
+  if (v.empty()) throw std::invalid_argument("stat_of: no measurements");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  const double med = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+  return {med, v.front(), v.back()};
+}
+
+Stat time_per_op(const std::function<void()>& f, long ops, int repeats) {
+  if (ops <= 0 || repeats <= 0) throw std::invalid_argument("time_per_op: ops and repeats must be positive");
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const auto t0 = std::chrono::steady_clock::now();
+    f();
+    const auto t1 = std::chrono::steady_clock::now();
+    t.push_back(std::chrono::duration<double>(t1 - t0).count() / static_cast<double>(ops));
+  }
+  return stat_of(std::move(t));
+}
+
+std::string fmt(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+std::string Table::to_csv() const {
+  auto cell = [](const std::string& s) {
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  std::ostringstream o;
+  for (std::size_t i = 0; i < columns.size(); ++i) o << (i ? "," : "") << cell(columns[i]);
+  o << "\n";
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) o << (i ? "," : "") << cell(r[i]);
+    o << "\n";
+  }
+  return o.str();
+}
+
+void progress(const std::string& what) {
+  if (isatty(STDERR_FILENO)) std::cerr << "\r\033[K" << what << std::flush;
+}
+
+namespace {
+
+double bits_from_ulps(double ulps) {
+  if (!std::isfinite(ulps)) return 53;
+  return std::min(53.0, std::log2(1 + ulps));
+}
+
+// |x - ref| / |ref| exactly (absolute when ref = 0); inf for non-finite x.
+double rel_error(long double x, const numeric& ref) {
+  if (!std::isfinite(x)) return HUGE_VAL;
+  const numeric r = num::to_exact(ref);
+  const numeric d = abs(num::exact_rational(x) - r);
+  return num::round_to_double(r.is_zero() ? d : d / abs(r));
+}
+double rel_error_exact(const numeric& x, const numeric& ref) {
+  const numeric r = num::to_exact(ref);
+  const numeric d = abs(num::to_exact(x) - r);
+  return num::round_to_double(r.is_zero() ? d : d / abs(r));
+}
+
+// Seeded random points in the declared domains of `params` that satisfy the file's
+// constraints and give a finite double value.
+std::vector<std::vector<double>> sample_points(const Derivation& d, const Formula& f, int n,
+                                               std::uint64_t seed,
+                                               const num::Evaluator<double>& probe) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u01(0, 1);
+  std::vector<std::vector<double>> pts;
+  for (int tries = 0; static_cast<int>(pts.size()) < n; ++tries) {
+    if (tries > 200 * n + 1000)
+      throw std::domain_error("chart: cannot draw valid points for " + f.label +
+                              " (the declared domains and constraints admit too few doubles)");
+    std::vector<double> x;
+    for (const auto& s : f.params) {
+      const SymbolInfo* si = d.symbols.find(s);
+      const Domain dom = si ? si->domain : Domain::real();
+      double v = 0;
+      const double logu = std::exp(std::log(0.1) + u01(rng) * std::log(100.0));  // 0.1 .. 10
+      switch (dom.kind) {
+        case Domain::Kind::Positive:
+        case Domain::Kind::Nonnegative: v = logu; break;
+        case Domain::Kind::Negative: v = -logu; break;
+        case Domain::Kind::Real: v = -10 + 20 * u01(rng); break;
+        case Domain::Kind::Interval: {
+          const double lo = GiNaC::ex_to<numeric>(dom.lo.evalf()).to_double();
+          const double hi = GiNaC::ex_to<numeric>(dom.hi.evalf()).to_double();
+          v = lo + (hi - lo) * u01(rng);
+          break;
+        }
+      }
+      x.push_back(v);
+    }
+    // the file's `assume` constraints among the bound symbols (others are skipped)
+    GiNaC::exmap at;
+    for (std::size_t j = 0; j < f.params.size(); ++j) {
+      const SymbolInfo* si = d.symbols.find(f.params[j]);
+      if (si) at[si->sym] = num::exact_rational(x[j]);
+    }
+    bool ok = true;
+    for (const Constraint& c : d.symbols.constraints()) {
+      const ex diff = (c.lhs - c.rhs).subs(at).evalf();
+      if (!GiNaC::is_a<numeric>(diff)) continue;
+      const numeric v = GiNaC::ex_to<numeric>(diff);
+      if (!v.is_real()) { ok = false; break; }
+      switch (c.op) {
+        case Constraint::Op::Lt: ok = v < 0; break;
+        case Constraint::Op::Le: ok = v <= 0; break;
+        case Constraint::Op::Gt: ok = v > 0; break;
+        case Constraint::Op::Ge: ok = v >= 0; break;
+        case Constraint::Op::Ne: ok = !v.is_zero(); break;
+      }
+      if (!ok) break;
+    }
+    if (!ok) continue;
+    if (!std::isfinite(probe(x.data()))) continue;
+    pts.push_back(std::move(x));
+  }
+  return pts;
+}
+
+GiNaC::exmap exact_point(const std::vector<GiNaC::symbol>& params, const std::vector<double>& x) {
+  GiNaC::exmap m;
+  for (std::size_t i = 0; i < params.size(); ++i) m[params[i]] = num::exact_rational(x[i]);
+  return m;
+}
+
+// Columns of `pts` tiled to at least `n` rows (for batch timings).
+std::vector<std::vector<double>> tiled_columns(const std::vector<std::vector<double>>& pts, std::size_t k,
+                                               std::size_t n) {
+  std::vector<std::vector<double>> cols(k, std::vector<double>(n));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < k; ++j) cols[j][i] = pts[i % pts.size()][j];
+  return cols;
+}
+
+struct Compiled {
+  std::string method;
+  num::Program prog;
+  std::vector<std::size_t> arg_index;   // program input i <- formula param arg_index[i]
+};
+
+std::vector<std::size_t> map_params(const std::vector<GiNaC::symbol>& want, const std::vector<GiNaC::symbol>& have,
+                                    const std::string& what) {
+  std::vector<std::size_t> idx;
+  for (const auto& w : want) {
+    auto it = std::find_if(have.begin(), have.end(), [&](const GiNaC::symbol& h) { return h.get_name() == w.get_name(); });
+    if (it == have.end()) throw std::invalid_argument(what + ": parameter " + w.get_name() + " is not a parameter of the naive form");
+    idx.push_back(static_cast<std::size_t>(it - have.begin()));
+  }
+  return idx;
+}
+
+num::CompileOptions naive_options() {
+  num::CompileOptions o;
+  o.fuse_log1p = o.fuse_expm1 = o.fuse_hypot = o.ratio_first = false;
+  return o;
+}
+
+// Table symbols named `names` -> fresh plain symbols (see PlainFormula).
+std::pair<GiNaC::exmap, std::vector<GiNaC::symbol>> plain_symbols(const Derivation& d,
+                                                                  const std::vector<std::string>& names) {
+  GiNaC::exmap m;
+  std::vector<GiNaC::symbol> out;
+  for (const auto& n : names) {
+    const SymbolInfo* s = d.symbols.find(n);
+    if (!s) throw std::invalid_argument("chart: no symbol " + n);
+    GiNaC::symbol p(n);
+    m[s->sym] = p;
+    out.push_back(p);
+  }
+  return {m, out};
+}
+
+}  // namespace
+
+PlainFormula plain_formula(const Derivation& d, const GiNaC::ex& expr) {
+  std::vector<std::string> names;
+  for (const auto& s : d.symbols.all())
+    if (!s.is_function && expr.has(s.sym)) names.push_back(s.name);
+  auto [m, syms] = plain_symbols(d, names);
+  return {expr.subs(m), syms, names};
+}
+
+std::function<double(const double*)> hand_written(const std::string& label, const std::vector<std::string>& params) {
+  auto at = [&](const char* name) -> std::size_t {
+    auto it = std::find(params.begin(), params.end(), name);
+    if (it == params.end()) throw std::invalid_argument(std::string("hand_written(") + label + "): no parameter " + name);
+    return static_cast<std::size_t>(it - params.begin());
+  };
+  if (label == "v1p_general") {  // §9.3.1 general impact
+    const auto m1 = at("m1"), m2 = at("m2"), v1 = at("v1"), v2 = at("v2"), e = at("e");
+    return [=](const double* x) { return (x[m1] * x[v1] + x[m2] * x[v2] - x[e] * x[m2] * (x[v1] - x[v2])) / (x[m1] + x[m2]); };
+  }
+  if (label == "v2p_general") {
+    const auto m1 = at("m1"), m2 = at("m2"), v1 = at("v1"), v2 = at("v2"), e = at("e");
+    return [=](const double* x) { return (x[m1] * x[v1] + x[m2] * x[v2] - x[e] * x[m1] * (x[v2] - x[v1])) / (x[m1] + x[m2]); };
+  }
+  if (label == "energy_loss_general") {  // ΔT = (1-e²)/2 m1 m2/(m1+m2) (v1-v2)²
+    const auto m1 = at("m1"), m2 = at("m2"), v1 = at("v1"), v2 = at("v2"), e = at("e");
+    return [=](const double* x) {
+      const double dv = x[v1] - x[v2];
+      return 0.5 * (1 - x[e] * x[e]) * x[m1] * x[m2] / (x[m1] + x[m2]) * dv * dv;
+    };
+  }
+  if (label == "deflection") {  // Example 9.5
+    const auto m = at("m"), M = at("M"), v0 = at("v0"), L = at("L"), g = at("g");
+    return [=](const double* x) {
+      const double r = x[m] / (x[M] + x[m]);
+      return std::acos(1 - r * r * x[v0] * x[v0] / (2 * x[L] * x[g]));
+    };
+  }
+  if (label == "v1p_bounce") {  // Example 9.6
+    const auto mu = at("mu"), e2 = at("e2"), e12 = at("e12"), v0 = at("v0");
+    return [=](const double* x) { return (x[mu] - x[e2] - x[e12] * (1 + x[e2])) / (x[mu] + 1) * x[v0]; };
+  }
+  if (label == "wall_impulse") {  // Example 9.2
+    const auto m = at("m"), l = at("l"), g = at("g"), th = at("theta0");
+    return [=](const double* x) {
+      const double s = std::sin(x[th]);
+      return x[m] * s * std::sqrt(x[g] * x[l] * s) / 3;
+    };
+  }
+  return {};
+}
+
+bool hand_written_batch(const std::string& label, const std::vector<std::string>& params,
+                        const double* const* c, double* out, std::size_t n) {
+  auto at = [&](const char* name) -> const double* {
+    auto it = std::find(params.begin(), params.end(), name);
+    if (it == params.end()) throw std::invalid_argument(std::string("hand_written(") + label + "): no parameter " + name);
+    return c[it - params.begin()];
+  };
+  if (label == "v1p_general") {
+    const double *m1 = at("m1"), *m2 = at("m2"), *v1 = at("v1"), *v2 = at("v2"), *e = at("e");
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = (m1[i] * v1[i] + m2[i] * v2[i] - e[i] * m2[i] * (v1[i] - v2[i])) / (m1[i] + m2[i]);
+    return true;
+  }
+  if (label == "v2p_general") {
+    const double *m1 = at("m1"), *m2 = at("m2"), *v1 = at("v1"), *v2 = at("v2"), *e = at("e");
+    for (std::size_t i = 0; i < n; ++i)
+      out[i] = (m1[i] * v1[i] + m2[i] * v2[i] - e[i] * m1[i] * (v2[i] - v1[i])) / (m1[i] + m2[i]);
+    return true;
+  }
+  if (label == "energy_loss_general") {
+    const double *m1 = at("m1"), *m2 = at("m2"), *v1 = at("v1"), *v2 = at("v2"), *e = at("e");
+    for (std::size_t i = 0; i < n; ++i) {
+      const double dv = v1[i] - v2[i];
+      out[i] = 0.5 * (1 - e[i] * e[i]) * m1[i] * m2[i] / (m1[i] + m2[i]) * dv * dv;
+    }
+    return true;
+  }
+  if (label == "deflection") {
+    const double *m = at("m"), *M = at("M"), *v0 = at("v0"), *L = at("L"), *g = at("g");
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = m[i] / (M[i] + m[i]);
+      out[i] = std::acos(1 - r * r * v0[i] * v0[i] / (2 * L[i] * g[i]));
+    }
+    return true;
+  }
+  if (label == "v1p_bounce") {
+    const double *mu = at("mu"), *e2 = at("e2"), *e12 = at("e12"), *v0 = at("v0");
+    for (std::size_t i = 0; i < n; ++i) out[i] = (mu[i] - e2[i] - e12[i] * (1 + e2[i])) / (mu[i] + 1) * v0[i];
+    return true;
+  }
+  if (label == "wall_impulse") {
+    const double *m = at("m"), *l = at("l"), *g = at("g"), *th = at("theta0");
+    for (std::size_t i = 0; i < n; ++i) {
+      const double s = std::sin(th[i]);
+      out[i] = m[i] * s * std::sqrt(g[i] * l[i] * s) / 3;
+    }
+    return true;
+  }
+  return false;
+}
+
+std::vector<WpRow> closed_form_wp(const std::string& path, const std::string& label, const ClosedOptions& opt) {
+  if (opt.points <= 0 || opt.repeats <= 0) throw std::invalid_argument("chart closed: points and repeats must be positive");
+  const Derivation d = load_derivation(path);
+  const Formula f = formula(d, label);
+  std::string base = path.substr(path.find_last_of('/') + 1);
+  const std::string fname = base + ":" + label;
+  const std::size_t k = f.params.size();
+
+  const PlainFormula pf = plain_formula(d, f.expr);
+  std::vector<Compiled> methods;
+  methods.push_back({"double (evaluator)", num::compile(pf.expr, pf.inputs), {}});
+  methods.push_back({"double (naive: no rewrites)", num::compile(pf.expr, pf.inputs, naive_options()), {}});
+  for (const Step& s : d.steps) {
+    if (!s.stable_of || *s.stable_of != label) continue;
+    const PlainFormula sf = plain_formula(d, formula(d, s.label).expr);
+    Compiled c{"double (stable form " + s.label + ")", num::compile(sf.expr, sf.inputs), map_params(sf.inputs, pf.inputs, s.label)};
+    methods.push_back(std::move(c));
+  }
+  const num::Evaluator<double> probe(methods[0].prog);
+  const auto pts = sample_points(d, f, opt.points, opt.seed, probe);
+
+  // the reference (>= 100 digits) at every point
+  std::vector<numeric> ref;
+  for (const auto& x : pts) ref.push_back(num::reference_value(pf.expr, exact_point(pf.inputs, x), opt.ref_digits));
+
+  std::vector<WpRow> rows;
+  const std::size_t n_batch = 1 << 16;
+  const auto cols = tiled_columns(pts, k, n_batch);
+  std::vector<double> out(n_batch);
+
+  auto add_double_method = [&](const std::string& method, const std::function<double(const double*)>& one,
+                               const std::function<void()>& batch, long ops) {
+    WpRow r{fname, method, time_per_op(batch, ops, opt.repeats), 0, 0, 0, static_cast<int>(pts.size())};
+    std::vector<double> errs;
+    double max_ulps = 0;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double y = one(pts[i].data());
+      errs.push_back(rel_error(y, ref[i]));
+      max_ulps = std::max(max_ulps, num::error_in_ulps(y, ref[i]));
+    }
+    const Stat s = stat_of(errs);
+    r.rel_err_median = s.median, r.rel_err_max = s.max, r.bits_lost_max = bits_from_ulps(max_ulps);
+    rows.push_back(r);
+  };
+
+  for (const Compiled& c : methods) {
+    progress("chart closed " + fname + ": " + c.method);
+    const num::Evaluator<double> ev(c.prog);
+    std::vector<const double*> cp;
+    const std::vector<std::size_t> idx = c.arg_index;
+    for (std::size_t i = 0; i < c.prog.n_inputs(); ++i) cp.push_back(cols[idx.empty() ? i : idx[i]].data());
+    auto one = [ev, idx](const double* x) {
+      if (idx.empty()) return ev(x);
+      std::vector<double> a;
+      for (std::size_t j : idx) a.push_back(x[j]);
+      return ev(a.data());
+    };
+    add_double_method(c.method, one, [&] { ev.eval_batch(cp.data(), out.data(), n_batch); }, static_cast<long>(n_batch));
+  }
+  // long double through the evaluator
+  {
+    progress("chart closed " + fname + ": long double");
+    const num::Evaluator<long double> ev(methods[0].prog);
+    std::vector<std::vector<long double>> lcols(k, std::vector<long double>(n_batch));
+    for (std::size_t j = 0; j < k; ++j)
+      for (std::size_t i = 0; i < n_batch; ++i) lcols[j][i] = cols[j][i];
+    std::vector<const long double*> cp;
+    for (auto& c : lcols) cp.push_back(c.data());
+    std::vector<long double> lout(n_batch);
+    WpRow r{fname, "long double (evaluator)",
+            time_per_op([&] { ev.eval_batch(cp.data(), lout.data(), n_batch); }, static_cast<long>(n_batch), opt.repeats),
+            0, 0, 0, static_cast<int>(pts.size())};
+    std::vector<double> errs;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      std::vector<long double> a(pts[i].begin(), pts[i].end());
+      errs.push_back(rel_error(ev(a.data()), ref[i]));
+    }
+    const Stat s = stat_of(errs);
+    r.rel_err_median = s.median, r.rel_err_max = s.max;
+    r.bits_lost_max = std::min(64.0, std::log2(1 + s.max / std::ldexp(1.0, -64)));
+    rows.push_back(r);
+  }
+  // hand-written C++ (speed limit)
+  if (auto hw = hand_written(label, pf.names)) {
+    progress("chart closed " + fname + ": hand-written");
+    std::vector<const double*> cp;
+    for (const auto& c : cols) cp.push_back(c.data());
+    add_double_method("hand-written C++", hw, [&] {
+      hand_written_batch(label, pf.names, cp.data(), out.data(), n_batch);
+    }, static_cast<long>(n_batch));
+  }
+  // CLN at d digits: inputs rounded to d digits, arithmetic in CLN floats of that precision
+  for (int digits : opt.cln_digits) {
+    progress("chart closed " + fname + ": CLN " + std::to_string(digits));
+    std::vector<numeric> vals(pts.size());
+    auto run = [&] {
+      DigitsGuard g(digits);
+      for (std::size_t i = 0; i < pts.size(); ++i) {
+        GiNaC::exmap m;
+        for (std::size_t j = 0; j < k; ++j) m[pf.inputs[j]] = num::exact_rational(pts[i][j]).evalf();
+        vals[i] = GiNaC::ex_to<numeric>(pf.expr.subs(m).evalf());
+      }
+    };
+    WpRow r{fname, "CLN " + std::to_string(digits) + " digits", time_per_op(run, static_cast<long>(pts.size()), opt.repeats),
+            0, 0, 0, static_cast<int>(pts.size())};
+    std::vector<double> errs;
+    for (std::size_t i = 0; i < pts.size(); ++i) errs.push_back(rel_error_exact(vals[i], ref[i]));
+    const Stat s = stat_of(errs);
+    r.rel_err_median = s.median, r.rel_err_max = s.max;
+    r.bits_lost_max = std::log2(1 + s.max / std::pow(10.0, -digits));
+    rows.push_back(r);
+  }
+  progress("");
+  return rows;
+}
+
+Table to_table(const std::vector<WpRow>& rows) {
+  Table t{{"formula", "method", "seconds_median", "seconds_min", "seconds_max", "rel_error_median", "rel_error_max",
+           "bits_lost_max", "points"}, {}};
+  for (const auto& r : rows)
+    t.rows.push_back({r.formula, r.method, fmt(r.seconds.median), fmt(r.seconds.min), fmt(r.seconds.max),
+                      fmt(r.rel_err_median), fmt(r.rel_err_max), fmt(r.bits_lost_max), std::to_string(r.points)});
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// stability maps
+
+const std::vector<MapInfo>& closed_form_maps() {
+  static const std::vector<MapInfo> maps = {
+      {"e_to_1", "energy loss as e -> 1 (05_direct_impact.dc:energy_loss_general)", "1 - e",
+       "(1 - e^2)/2 ... as written, evaluator with rewrites off", "stable steps of the file; the evaluator"},
+      {"v1_to_v2", "plastic energy loss as v1 - v2 -> 0 (05_direct_impact.dc:energy_loss_plastic)", "(v1 - v2)/v1",
+       "T before - T after (first side of the chain)", "1/2 m1 m2/(m1+m2) (v1-v2)^2 (last side)"},
+      {"mu_to_0", "tennis ball rebound as mu -> 0 (07_two_ball_bounce.dc:v1p_bounce)", "mu = m1/m2",
+       "the formula as written", "the evaluator"},
+      {"m2_to_inf", "energy loss as m2 -> oo, m1 = 1e150 kg (05_direct_impact.dc:energy_loss_general)", "m2 [kg]",
+       "m1 m2/(m1+m2) as written (m1 m2 overflows)", "the evaluator (m1/(m1+m2) m2)"},
+      {"theta_to_0", "ballistic pendulum angle as v0 -> 0 (06_ballistic_pendulum.dc:deflection)", "v0 [m/s]",
+       "acos(1 - ...) as written", "half-angle 2 asin(...) (closed_forms.hpp), stable steps of the file"},
+      {"mr_to_m0", "rocket velocity as m_r -> m0 (09_rocket.dc:velocity)", "1 - m_r/m0",
+       "-u_e ln(m_r/m0) - g t as written", "-u_e log1p(-mu t/m0) - g t (closed_forms.hpp), stable steps"},
+  };
+  return maps;
+}
+
+namespace {
+
+struct MapCase {
+  std::string method;
+  std::function<double(const std::vector<double>&)> eval;   // args in `names` order
+};
+
+// Evaluate an expression in double through a compiled program with inputs `syms`.
+MapCase compiled_case(const std::string& method, const ex& e, const std::vector<GiNaC::symbol>& syms,
+                      const num::CompileOptions& o) {
+  auto ev = std::make_shared<num::Evaluator<double>>(num::compile(e, syms, o));
+  return {method, [ev](const std::vector<double>& x) { return (*ev)(x.data()); }};
+}
+
+
+}  // namespace
+
+std::vector<MapRow> closed_form_map(const std::string& root, const std::string& name, int steps) {
+  if (steps < 2) throw std::invalid_argument("chart map: need at least 2 steps");
+  const std::string dir = root + "/derivations/handout9/";
+  std::vector<MapRow> rows;
+  // Each map: the file, the expression(s), symbols in order, the fixed values, and the stress
+  // value at step i (as exact doubles).
+  std::string file, label;
+  std::vector<std::string> names;
+  std::function<std::vector<double>(int)> point;   // point at step i
+  std::function<double(const std::vector<double>&)> xval;
+  if (name == "e_to_1" || name == "m2_to_inf") {
+    file = "05_direct_impact.dc", label = "energy_loss_general";
+    names = {"m1", "m2", "v1", "v2", "e"};
+    if (name == "e_to_1") {
+      point = [&](int i) { return std::vector<double>{1, 2, 3, 1, 1 - std::ldexp(1.0, -1 - 51 * i / (steps - 1))}; };
+      xval = [](const std::vector<double>& x) { return 1 - x[4]; };
+    } else {
+      point = [&](int i) { return std::vector<double>{1e150, std::pow(10.0, 140 + 168.0 * i / (steps - 1)), 3, 1, 0.5}; };
+      xval = [](const std::vector<double>& x) { return x[1]; };
+    }
+  } else if (name == "v1_to_v2") {
+    file = "05_direct_impact.dc", label = "energy_loss_plastic";
+    names = {"m1", "m2", "v1", "v2"};
+    point = [&](int i) { return std::vector<double>{1, 2, 3, 3 * (1 - std::ldexp(1.0, -1 - 51 * i / (steps - 1)))}; };
+    xval = [](const std::vector<double>& x) { return (x[2] - x[3]) / x[2]; };
+  } else if (name == "mu_to_0") {
+    file = "07_two_ball_bounce.dc", label = "v1p_bounce";
+    names = {"v0", "e2", "e12", "mu"};
+    point = [&](int i) { return std::vector<double>{-4, 1, 1, std::ldexp(1.0, -60 * i / (steps - 1))}; };
+    xval = [](const std::vector<double>& x) { return x[3]; };
+  } else if (name == "theta_to_0") {
+    file = "06_ballistic_pendulum.dc", label = "deflection";
+    names = {"m", "M", "v0", "L", "g"};
+    point = [&](int i) { return std::vector<double>{0.01, 2, 300 * std::pow(10.0, -12.0 * i / (steps - 1)), 1, 9.81}; };
+    xval = [](const std::vector<double>& x) { return x[2]; };
+  } else if (name == "mr_to_m0") {
+    file = "09_rocket.dc", label = "velocity";
+    names = {"u_e", "m0", "mu", "g", "t"};
+    // m_r = m0 - mu t: burn fraction mu t/m0 from 1/2 down to 1e-15
+    point = [&](int i) { return std::vector<double>{2500, 1000, 10, 9.81, 50 * std::pow(10.0, -14.0 * i / (steps - 1))}; };
+    xval = [](const std::vector<double>& x) { return x[2] * x[4] / x[1]; };
+  } else {
+    throw std::invalid_argument("unknown map '" + name + "'; maps: e_to_1, v1_to_v2, mu_to_0, m2_to_inf, theta_to_0, mr_to_m0");
+  }
+  const Derivation d = load_derivation(dir + file);
+  const Step* st = d.find(label);
+  if (!st) throw std::invalid_argument("chart map: " + file + " has no step " + label);
+  auto [plain, syms] = plain_symbols(d, names);
+
+  ex ref_expr;
+  std::vector<MapCase> cases;
+  if (name == "mr_to_m0") {
+    // vr(t) = -u_e log(mr(t)/m0) - g t with the prescribed mass m_r(t) = m0 - mu t: the naive
+    // double evaluation rounds m_r/m0 first.
+    const ex side = claim_sides(d, *st).back().subs(plain);
+    const ex mr = syms[1] - syms[2] * syms[4];
+    GiNaC::exmap sub;
+    for (auto it = side.preorder_begin(); it != side.preorder_end(); ++it)
+      if (pool_function_index(*it) >= 0 && pool_derivative_order(*it) == 0) sub[*it] = mr;
+    ref_expr = side.subs(sub);
+    cases.push_back(compiled_case("naive: -u_e ln(m_r/m0) - g t", ref_expr, syms, naive_options()));
+    cases.push_back({"stable: -u_e log1p(-mu t/m0) - g t (closed_forms.hpp)",
+                     [](const std::vector<double>& x) { return scenes::cf::rocket_v(x[1], x[2], x[0], x[3], x[4]); }});
+  } else if (name == "v1_to_v2") {
+    const auto sides = claim_sides(d, *st);
+    ref_expr = sides.back().subs(plain);
+    cases.push_back(compiled_case("naive: T before - T after", sides.at(1).subs(plain), syms, naive_options()));
+    cases.push_back(compiled_case("stable: 1/2 m1 m2/(m1+m2) (v1-v2)^2", ref_expr, syms, {}));
+  } else {
+    ref_expr = formula(d, label).expr.subs(plain);
+    cases.push_back(compiled_case("naive: as written", ref_expr, syms, naive_options()));
+    cases.push_back(compiled_case("evaluator (rewrites on)", ref_expr, syms, {}));
+    if (name == "theta_to_0")
+      cases.push_back({"stable: 2 asin(m v0/((M+m) 2 sqrt(g L))) (closed_forms.hpp)", [](const std::vector<double>& x) {
+                         return scenes::cf::pendulum_theta(x[0], x[1], x[2], x[3], x[4]);
+                       }});
+  }
+  for (const Step& s : d.steps)
+    if (s.stable_of && *s.stable_of == label) {
+      const PlainFormula sf = plain_formula(d, formula(d, s.label).expr);
+      auto ev = std::make_shared<num::Evaluator<double>>(num::compile(sf.expr, sf.inputs));
+      std::vector<std::size_t> idx;
+      for (const auto& p : sf.inputs) {
+        auto it = std::find_if(syms.begin(), syms.end(), [&](const GiNaC::symbol& q) { return q.get_name() == p.get_name(); });
+        if (it == syms.end()) throw std::invalid_argument("chart map: stable step " + s.label + " uses " + p.get_name());
+        idx.push_back(static_cast<std::size_t>(it - syms.begin()));
+      }
+      cases.push_back({"stable: " + s.label + " (" + file + ")", [ev, idx](const std::vector<double>& x) {
+                         std::vector<double> a;
+                         for (auto j : idx) a.push_back(x[j]);
+                         return (*ev)(a.data());
+                       }});
+    }
+
+  for (int i = 0; i < steps; ++i) {
+    progress("chart map " + name + ": " + std::to_string(i + 1) + "/" + std::to_string(steps));
+    const auto x = point(i);
+    GiNaC::exmap m;
+    for (std::size_t j = 0; j < syms.size(); ++j) m[syms[j]] = num::exact_rational(x[j]);
+    const numeric ref = num::reference_value(ref_expr, m, 60);
+    for (const auto& c : cases) {
+      const double y = c.eval(x);
+      rows.push_back({name, xval(x), c.method, y, bits_from_ulps(num::error_in_ulps(y, ref))});
+    }
+  }
+  progress("");
+  return rows;
+}
+
+Table to_table(const std::vector<MapRow>& rows) {
+  Table t{{"map", "stress", "method", "value", "bits_lost"}, {}};
+  for (const auto& r : rows) t.rows.push_back({r.map, fmt(r.stress), r.method, fmt(r.value), fmt(r.bits_lost)});
+  return t;
+}
+
+std::vector<StiffRow> stiff_spring_map(double k, int steps, double omega_h_max) {
+  if (!(k > 0) || steps < 2 || !(omega_h_max > 0)) throw std::invalid_argument("stiff_spring_map: k, steps, omega_h_max must be positive");
+  const auto& spec = scenes::find_scene("spring");
+  scenes::Params p = scenes::defaults(spec);
+  p["k"] = k;
+  const double omega = std::sqrt(k * (p["m1"] + p["m2"]) / (p["m1"] * p["m2"]));
+  p["t_end"] = 200 / omega;   // ~32 periods
+  std::vector<StiffRow> rows;
+  for (scenes::Method m : {scenes::Method::euler, scenes::Method::rk4, scenes::Method::verlet, scenes::Method::rosenbrock}) {
+    for (int i = 0; i < steps; ++i) {
+      const double wh = omega_h_max * (0.05 + 0.95 * i / (steps - 1));
+      progress("chart stiff " + std::string(scenes::method_name(m)) + " omega h = " + fmt(wh));
+      scenes::RunOptions o;
+      o.method = m;
+      o.h = wh / omega;
+      const auto r = scenes::run_scene(spec, p, o);
+      rows.push_back({std::string(scenes::method_name(m)), wh, r.metric("max_position_error"), r.metric("max_energy_drift")});
+    }
+  }
+  progress("");
+  return rows;
+}
+
+Table to_table(const std::vector<StiffRow>& rows) {
+  Table t{{"method", "omega_h", "max_position_error", "energy_drift"}, {}};
+  for (const auto& r : rows) t.rows.push_back({r.method, fmt(r.omega_h), fmt(r.max_position_error), fmt(r.energy_drift)});
+  return t;
+}
+
+// ---------------------------------------------------------------------------------------------
+// scene work-precision
+
+std::string scene_quantity(const std::string& scene) {
+  static const std::map<std::string, std::string> q = {
+      {"spring", "x2(t_end)"}, {"pendulum", "theta_max"}, {"rocket", "v_burnout"}, {"ladder", "sin_theta_sep"},
+      {"chain", "t_landed"}, {"cannon", "v_ratio"}};
+  auto it = q.find(scene);
+  if (it == q.end()) throw std::invalid_argument("chart scenes: no work-precision quantity for scene '" + scene + "'");
+  return it->second;
+}
+
+std::vector<SceneRow> scene_wp(const std::string& scene, const SceneOptions& opt) {
+  const auto& spec = scenes::find_scene(scene);
+  const std::string quantity = scene_quantity(scene);
+  const scenes::Params p = scenes::defaults(spec);
+  // largest fixed step: 20x the scene's default (halved down the sweep)
+  const double h0 = 20 * spec.default_h;
+  std::vector<SceneRow> rows;
+  for (scenes::Method m : spec.methods) {
+    for (int j = 0; j < opt.sweep; ++j) {
+      scenes::RunOptions o;
+      o.method = m;
+      std::string param;
+      if (m == scenes::Method::dopri5) {
+        o.tol = std::pow(10.0, -3 - j * 9.0 / std::max(1, opt.sweep - 1));
+        o.h = 0;   // output spacing: the scene default
+        param = "tol=" + fmt(o.tol);
+      } else {
+        o.h = h0 * std::ldexp(1.0, -j);
+        param = "h=" + fmt(o.h);
+      }
+      progress("chart scenes " + scene + " " + std::string(scenes::method_name(m)) + " " + param);
+      scenes::SceneResult last;
+      bool failed = false;
+      const Stat t = time_per_op([&] {
+        try {
+          last = scenes::run_scene(spec, p, o);
+        } catch (const std::exception&) {
+          failed = true;
+        }
+      }, 1, opt.repeats);
+      if (failed) continue;
+      SceneRow r{scene, quantity, std::string(scenes::method_name(m)), param, t, 0, -1, last.rhs_evaluations};
+      const auto& c = last.get(quantity);
+      r.rel_error = std::isfinite(c.simulated) ? c.rel_error() : HUGE_VAL;
+      if (last.metrics.count("max_energy_drift")) r.drift = last.metric("max_energy_drift");
+      rows.push_back(r);
+    }
+  }
+  progress("");
+  return rows;
+}
+
+Table to_table(const std::vector<SceneRow>& rows) {
+  Table t{{"scene", "quantity", "method", "param", "seconds_median", "seconds_min", "seconds_max", "rel_error", "drift",
+           "rhs_evaluations"}, {}};
+  for (const auto& r : rows)
+    t.rows.push_back({r.scene, r.quantity, r.method, r.param, fmt(r.seconds.median), fmt(r.seconds.min), fmt(r.seconds.max),
+                      fmt(r.rel_error), r.drift < 0 ? "" : fmt(r.drift), std::to_string(r.rhs_evaluations)});
+  return t;
+}
+
+}  // namespace dc::chart
