@@ -1,6 +1,7 @@
 // Binding a user's point to a formula of a derivation, and `derivcheck eval`.
 #include <algorithm>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 #include "numeric/exact.hpp"
@@ -25,6 +26,12 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
+std::string exact_text(const GiNaC::numeric& v) {
+  std::ostringstream os;
+  os << v;  // exact rationals print deterministically: "3/2"
+  return os.str();
+}
+
 }  // namespace
 
 GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
@@ -40,9 +47,10 @@ GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
                               "' has parameters " + join(names));
     const SymbolInfo* info = d.symbols.find(name);
     if (info && !info->domain.contains(value))
-      throw std::domain_error("parameter '" + name + "' = " + format_significant(value, 17) +
+      throw std::domain_error("parameter '" + name + "' = " + exact_text(value) +
                               " is outside its declared domain (" + info->domain.to_string() + ")");
-    point[f.params[static_cast<std::size_t>(it - names.begin())]] = value;
+    // the table's symbol (a possymbol for positive symbols), not the sliced copy in f.params
+    point[info ? info->sym : GiNaC::ex(f.params[static_cast<std::size_t>(it - names.begin())])] = value;
     bound.insert(name);
   }
   std::vector<std::string> missing;

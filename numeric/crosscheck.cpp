@@ -92,7 +92,7 @@ class Checker {
       if (!std::isfinite(x[i])) return std::nullopt;
       const GiNaC::numeric v = exact_rational(x[i]);
       if (!infos_[i]->domain.contains(v)) return std::nullopt;
-      p[f_.params[i]] = v;
+      p[infos_[i]->sym] = v;  // the table's symbol: f.params holds sliced copies
     }
     for (const Constraint& c : d_.symbols.constraints()) {
       std::set<std::string> rest;

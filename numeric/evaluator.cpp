@@ -92,7 +92,10 @@ class Compiler {
   Compiler(const std::vector<GiNaC::symbol>& inputs, const CompileOptions& opt)
       : inputs_(inputs), opt_(opt) {
     for (std::size_t i = 0; i < inputs.size(); ++i) {
-      input_index_[inputs[i]] = static_cast<std::uint32_t>(i);
+      // by name: a possymbol held in a GiNaC::symbol value is sliced to a plain symbol, which
+      // no longer compares equal to the possymbol in the expression
+      if (!input_index_.emplace(inputs[i].get_name(), static_cast<std::uint32_t>(i)).second)
+        throw std::invalid_argument("evaluator: input '" + inputs[i].get_name() + "' given twice");
       kind_.push_back(Kind::Input);
     }
   }
@@ -116,7 +119,7 @@ class Compiler {
       k = "#" + os.str();
     } else if (is_a<GiNaC::symbol>(e)) {
       k = "s:" + ex_to<GiNaC::symbol>(e).get_name();
-      auto in = input_index_.find(e);
+      auto in = input_index_.find(ex_to<GiNaC::symbol>(e).get_name());
       if (in != input_index_.end()) k += ":" + std::to_string(in->second);
     } else if (is_a<GiNaC::constant>(e)) {
       std::ostringstream os;
@@ -197,7 +200,7 @@ class Compiler {
 
   std::uint32_t compile_uncached(const ex& e) {
     if (is_a<GiNaC::symbol>(e)) {
-      auto in = input_index_.find(e);
+      auto in = input_index_.find(ex_to<GiNaC::symbol>(e).get_name());
       if (in == input_index_.end())
         throw std::invalid_argument("evaluator: symbol '" + ex_to<GiNaC::symbol>(e).get_name() +
                                     "' is not an input of the formula");
@@ -499,7 +502,7 @@ class Compiler {
 
   const std::vector<GiNaC::symbol>& inputs_;
   CompileOptions opt_;
-  std::map<ex, std::uint32_t, GiNaC::ex_is_less> input_index_;
+  std::map<std::string, std::uint32_t> input_index_;
   std::map<ex, std::string, GiNaC::ex_is_less> keys_;
   std::map<std::string, std::uint32_t> memo_;
   std::map<std::string, std::uint32_t> consts_;
