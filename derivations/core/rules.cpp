@@ -11,6 +11,7 @@
 #include "derivations/core/rules.hpp"
 
 #include <chrono>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -229,8 +230,14 @@ class Checker {
     }
     return out;
   }
+  // Substitutions are applied repeatedly until nothing changes (so they may be given in any
+  // order); a cycle x = y, y = x stops after a fixed number of rounds.
   static ex apply(ex e, const std::vector<std::pair<ex, ex>>& subs) {
-    for (const auto& [from, to] : subs) e = e.subs(from == to, GiNaC::subs_options::no_pattern);
+    for (int round = 0; round < 16; ++round) {
+      ex before = e;
+      for (const auto& [from, to] : subs) e = e.subs(from == to, GiNaC::subs_options::no_pattern);
+      if (e.is_equal(before)) break;   // structural: only to detect a fixed point
+    }
     return e;
   }
 
@@ -266,6 +273,16 @@ class Checker {
     for (std::size_t i = 0; i < e.nops(); ++i) collect_functions(e.op(i), out);
   }
 
+  static void collect_symbol_powers(const ex& e, std::vector<ex>& out) {
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::symbol>(e.op(0))) {
+      for (const auto& o : out)
+        if (o.is_equal(e)) return;
+      out.push_back(e);
+      return;
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) collect_symbol_powers(e.op(i), out);
+  }
+
   // Is `num` linear in `c` (a symbol or a function application)? Then value = -rest/coef.
   static bool linear_in(const ex& num, const ex& c, ex& coef, ex& value) {
     ex n = num, var = c;
@@ -274,6 +291,8 @@ class Checker {
       n = num.subs(c == tmp, GiNaC::subs_options::no_pattern);
       var = tmp;
       if (!n.has(tmp)) return false;
+      // omega^2 counts only when omega occurs nowhere else
+      if (GiNaC::is_a<GiNaC::power>(c) && n.has(c.op(0))) return false;
     }
     ex k = n.coeff(var, 1);
     if (k.is_zero() || k.has(var)) return false;
@@ -354,6 +373,7 @@ class Checker {
       for (const auto& c : cands) consider(c, false);
       std::vector<ex> fns;
       collect_functions(num, fns);
+      collect_symbol_powers(num, fns);
       for (const auto& f : fns)
         if (pool_function_index(f) < 0) consider(f, true);
       if (best_score < 0) {
@@ -395,9 +415,57 @@ class Checker {
     return out;
   }
 
+  static void application_args(const ex& e, std::vector<ex>& out) {
+    if (pool_function_index(e) >= 0 && e.nops() >= 1) {
+      for (const auto& o : out)
+        if (o.is_equal(e.op(0))) return;
+      out.push_back(e.op(0));
+      return;
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) application_args(e.op(i), out);
+  }
+
+  // An equation between function applications of one parameter s (p(t) = m*v(t)) holds for
+  // every value of s: add its instances at the other arguments the claim uses (t1, t2).
+  std::vector<Eq> instantiate(const std::vector<Eq>& eqs, const ex& claim) const {
+    std::vector<ex> want;
+    application_args(claim, want);
+    std::sort(want.begin(), want.end(), [&](const ex& x, const ex& y) { return text(x) < text(y); });
+    std::vector<Eq> out = eqs;
+    if (want.empty()) return out;
+    bool claim_has_derivative = false;
+    {
+      std::function<void(const ex&)> walk = [&](const ex& e) {
+        if (GiNaC::is_a<GiNaC::fderivative>(e)) claim_has_derivative = true;
+        for (std::size_t i = 0; i < e.nops(); ++i) walk(e.op(i));
+      };
+      walk(claim);
+    }
+    for (const auto& q : eqs) {
+      std::vector<ex> args;
+      application_args(q.e, args);
+      if (args.size() != 1 || !GiNaC::is_a<GiNaC::symbol>(args[0])) continue;
+      const GiNaC::symbol& s = GiNaC::ex_to<GiNaC::symbol>(args[0]);
+      // it holds for every s, so its derivative in s holds too (p(t) = m v(t) gives p' = m v')
+      std::vector<ex> forms{q.e};
+      if (claim_has_derivative) {
+        ex d = q.e.diff(s);
+        if (!d.is_zero()) forms.push_back(d);
+      }
+      for (std::size_t k = 0; k < forms.size(); ++k) {
+        if (k > 0) out.push_back({forms[k], ex(), q.from});
+        for (const auto& w : want)
+          if (!w.is_equal(args[0]))
+            out.push_back({forms[k].subs(args[0] == w, GiNaC::subs_options::no_pattern), ex(), q.from});
+      }
+    }
+    return out;
+  }
+
   // Does a = b follow from the equations?
-  Verdict follows(const ex& a, const ex& b, const std::vector<Eq>& eqs, const std::vector<ex>& preferred = {}) {
-    if (eqs.empty()) return prove_equal(a, b, d_.symbols, opt_);
+  Verdict follows(const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred = {}) {
+    if (eqs0.empty()) return prove_equal(a, b, d_.symbols, opt_);
+    std::vector<Eq> eqs = instantiate(eqs0, a - b);
     Reduction red = reduce(eqs, a - b, preferred, false);
     ex ra = reduced(a, red), rb = reduced(b, red);
     Verdict v = prove_equal(ra, rb, d_.symbols, opt_);
@@ -629,8 +697,21 @@ Verdict Checker::solve(const Relation& claim) {
       else
         c.add(proved("claim substituted back (normal)"), "");
     }
+    // The declared domain of the unknown picks the root: v0 : negative for v0 = -sqrt(...).
+    std::string root_note = " (other roots are not excluded)";
+    if (GiNaC::is_a<GiNaC::symbol>(out(lhs))) {
+      const SymbolInfo* info = d_.symbols.find(GiNaC::ex_to<GiNaC::symbol>(out(lhs)));
+      if (info && info->domain.kind != Domain::Kind::Real && info->domain.kind != Domain::Kind::Interval) {
+        bool neg = info->domain.kind == Domain::Kind::Negative;
+        ex g = out(G);
+        Verdict v = prove_equal(GiNaC::sqrt(GiNaC::pow(g, 2)), neg ? -g : g, d_.symbols, opt_);
+        v.method = prefix_method("root in the declared domain", v.method);
+        c.add(v, "the claimed root must be " + info->domain.to_string() + " like " + info->name, true);
+        root_note = " (the root is the one in the declared domain: " + info->name + " " + info->domain.to_string() + ")";
+      }
+    }
     res_.derived = "nonlinear in the unknowns: the claim " + text(out(lhs)) + " = " + text(out(G)) +
-                   " was substituted into the equations (other roots are not excluded)";
+                   " was substituted into the equations" + root_note;
   }
   return c.result();
 }
