@@ -72,7 +72,8 @@ std::string gnuplot_script(const Plot& p, const std::string& terminal, const std
   o << "set xlabel " << gp_quote(p.xlabel) << " noenhanced\nset ylabel " << gp_quote(p.ylabel) << " noenhanced\n";
   if (p.logx) o << "set logscale x\nset format x '10^{%L}'\n";
   if (p.logy) o << "set logscale y\nset format y '10^{%L}'\n";
-  o << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key outside right top noenhanced\n";
+  o << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key outside below center maxrows 4 noenhanced\n";
+  o << "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
   o << "set border lw 1.2\nset pointsize 1.1\n";
   for (const auto& [x, label] : p.vlines)
     o << "set arrow from " << num(x) << ", graph 0 to " << num(x) << ", graph 1 nohead dt 2 lc rgb '#888888'\n"

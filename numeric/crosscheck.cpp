@@ -136,6 +136,7 @@ class Checker {
         with(i, hi, nm + " = " + fmt(hi));
         continue;
       }
+      if (s.domain.kind == Domain::Kind::Nonnegative) with(i, 0.0, nm + " = 0");
       const double sign = base[i] < 0 ? -1.0 : 1.0;
       for (double f : {1e-8, 1e8}) with(i, base[i] * f, nm + " * " + fmt(f, "%g"));
       for (double a : {1e-160, 1e160, 1e-300, 1e300}) with(i, sign * a, nm + " = " + fmt(sign * a, "%g"));
@@ -196,25 +197,6 @@ std::uint64_t mix(std::uint64_t seed, const std::string& s) {
 
 }  // namespace
 
-CompiledFormula compile_formula(const Derivation& d, const std::string& label) {
-  CompiledFormula cf;
-  cf.formula = formula(d, label);
-  cf.used_label = label;
-  if (const Step* s = stable_step_for(d, label)) {
-    try {
-      const Formula sf = formula(d, s->label);
-      cf.program = compile(sf.expr, cf.formula.params);
-      cf.used_label = s->label;
-      cf.regime = s->stable_regime;
-      return cf;
-    } catch (const std::invalid_argument&) {
-      // the stable form needs inputs the formula does not have: use the formula itself
-    }
-  }
-  cf.program = compile(cf.formula.expr, cf.formula.params);
-  return cf;
-}
-
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt) {
   std::vector<FormulaReport> reports;
   for (const Formula& f : formulas(d)) {
@@ -223,7 +205,7 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
     rep.label = f.label;
     rep.target = f.target;
     if (f.step && f.step->stable_of) rep.stable_of = *f.step->stable_of;
-    std::optional<Program> naive, stable;
+    std::optional<Program> naive;
     try {
       naive = compile(f.expr, f.params);
     } catch (const std::invalid_argument& e) {
@@ -232,19 +214,23 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
       continue;
     }
     std::string stable_problem;
+    std::optional<FormulaEvaluator> fe;
     if (const Step* s = stable_step_for(d, f.label)) {
       rep.stable_label = s->label;
       rep.stable_regime = s->stable_regime;
       try {
-        stable = compile(formula(d, s->label).expr, f.params);
+        fe.emplace(d, f.label);
+        if (!fe->has_stable()) {
+          stable_problem = "needs inputs the formula does not have";
+          fe.reset();
+        }
       } catch (const std::exception& e) {
         stable_problem = e.what();
+        fe.reset();
       }
     }
     Evaluator<double> ev_d(*naive);
     Evaluator<long double> ev_ld(*naive);
-    std::optional<Evaluator<double>> ev_s;
-    if (stable) ev_s.emplace(*stable);
 
     Checker ck(d, f, opt, mix(opt.seed, d.source.name + ":" + f.label));
     Acc acc_d, acc_ld, acc_s;
@@ -259,8 +245,9 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
       acc_d.add(error_in_ulps(vd, *ref), std::isfinite(vd), c);
       const long double vl = ev_ld(xl);
       acc_ld.add(error_in_ulps(vl, *ref), std::isfinite(vl), c);
-      if (ev_s) {
-        const double vs = (*ev_s)(xd);
+      if (fe) {
+        const double vs = (*fe)(xd);
+        if (fe->in_regime(xd.data())) ++rep.in_regime;
         acc_s.add(error_in_ulps(vs, *ref), std::isfinite(vs), c);
       }
       return true;
@@ -302,7 +289,7 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
     };
     rep.methods.push_back(stats("double", acc_d));
     rep.methods.push_back(stats("long double", acc_ld));
-    if (ev_s) rep.methods.push_back(stats("stable", acc_s));
+    if (fe) rep.methods.push_back(stats("stable", acc_s));
     else if (!stable_problem.empty()) rep.skipped = "stable form " + rep.stable_label + ": " + stable_problem;
     if (acc_d.errs.empty() && rep.skipped.empty())
       rep.skipped = "no valid point found in the declared domain";
@@ -344,6 +331,12 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
       out += line;
     }
     if (!r.skipped.empty()) out += "  " + std::string(28, ' ') + " note: " + r.skipped + "\n";
+    if (r.stable_regime.rfind("when ", 0) == 0 && !r.methods.empty()) {
+      const auto colon = r.stable_regime.find(':');
+      out += "  " + std::string(28, ' ') + " note: stable form used at " + std::to_string(r.in_regime) +
+             " of " + std::to_string(r.methods[0].points) + " points (" +
+             r.stable_regime.substr(0, colon) + ")\n";
+    }
   }
   std::string head = "derivcheck crosscheck: seed " + std::to_string(opt.seed) + ", " +
                      std::to_string(opt.points) + " random points per formula" +

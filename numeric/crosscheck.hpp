@@ -16,6 +16,7 @@
 
 #include "derivations/core/derivation.hpp"
 #include "numeric/evaluator.hpp"
+#include "numeric/formula_evaluator.hpp"
 
 namespace dc::num {
 
@@ -28,7 +29,8 @@ struct CrossCheckOptions {
 };
 
 struct MethodStats {
-  std::string method;       // "double", "long double", "stable"
+  std::string method;       // "double", "long double", "stable" (the FormulaEvaluator: the
+                            // stable form in its regime, the formula elsewhere)
   std::size_t points = 0;
   std::size_t stress_points = 0;
   double median_ulps = 0, max_ulps = 0;
@@ -42,22 +44,12 @@ struct FormulaReport {
   std::string file, label, target;
   std::string stable_label;    // the step declared `stable <this label>` (empty if none)
   std::string stable_regime;
+  std::size_t in_regime = 0;   // points where the stable form was used
   std::string stable_of;       // this formula is itself the stable form of ...
   std::string skipped;         // non-empty: why it is not evaluated (e.g. abstract functions)
   std::size_t rejected = 0;    // candidate points outside constraints or where undefined
   std::vector<MethodStats> methods;
 };
-
-// The evaluator a user of the formula gets: the stable form when the file declares one
-// (stable forms are proved equal to the formula by the checker, and the cross-check shows
-// they are at least as accurate over the whole domain), otherwise the formula itself.
-struct CompiledFormula {
-  Formula formula;                 // the formula requested
-  std::string used_label;          // the step whose expression is compiled
-  std::string regime;              // the stable step's regime text, if used
-  Program program;
-};
-CompiledFormula compile_formula(const Derivation& d, const std::string& label);
 
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt);
 
