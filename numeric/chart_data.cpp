@@ -112,7 +112,7 @@ std::vector<std::vector<double>> sample_points(const Derivation& d, const Formul
                               " (the declared domains and constraints admit too few doubles)");
     std::vector<double> x;
     for (const auto& s : f.params) {
-      const SymbolInfo* si = d.symbols.find(s);
+      const SymbolInfo* si = d.symbols.find(s.get_name());
       const Domain dom = si ? si->domain : Domain::real();
       double v = 0;
       const double logu = std::exp(std::log(0.1) + u01(rng) * std::log(100.0));  // 0.1 .. 10
@@ -133,7 +133,7 @@ std::vector<std::vector<double>> sample_points(const Derivation& d, const Formul
     // the file's `assume` constraints among the bound symbols (others are skipped)
     GiNaC::exmap at;
     for (std::size_t j = 0; j < f.params.size(); ++j) {
-      const SymbolInfo* si = d.symbols.find(f.params[j]);
+      const SymbolInfo* si = d.symbols.find(f.params[j].get_name());
       if (si) at[si->sym] = num::exact_rational(x[j]);
     }
     bool ok = true;
