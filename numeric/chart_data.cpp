@@ -351,7 +351,6 @@ std::vector<WpRow> closed_form_wp(const std::string& path, const std::string& la
     double max_ulps = 0;
     for (std::size_t i = 0; i < pts.size(); ++i) {
       const double y = one(pts[i].data());
-      if (std::getenv("DC_CHART_DEBUG")) std::cerr << method << " y=" << y << " ref=" << ref[i] << " x0=" << pts[i][0] << "\n";
       errs.push_back(rel_error(y, ref[i]));
       max_ulps = std::max(max_ulps, num::error_in_ulps(y, ref[i]));
     }
