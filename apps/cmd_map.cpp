@@ -101,8 +101,8 @@ static dc::cli::CommandRegistrar reg_map(
              << "| eq. | label | line | rule | verdict | tests |\n|---|---|---|---|---|---|\n";
           for (const auto& r : summary.results) {
             const dc::Step& s = *r.step;
-            std::string verdict = dc::to_string(r.verdict.kind);
-            if (!r.verdict.method.empty()) verdict += " (" + r.verdict.method + ")";
+            std::string verdict = r.premise && r.verdict.holds() ? std::string("premise") : std::string(dc::to_string(r.verdict.kind));
+            if (!r.premise && !r.verdict.method.empty()) verdict += " (" + r.verdict.method + ")";
             if (r.erratum_reported) verdict = "erratum reported; corrected form " + verdict;
             else if (!r.errors.empty()) verdict = "error";
             std::string tests_cell = "ctest `derivation: handout9/" + fs::path(f).stem().string() + "`";

@@ -13,6 +13,7 @@ const char* mark(const StepResult& r) {
   std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
   if (own > 0 || r.verdict.kind == VerdictKind::Refuted) return "\u2717";   // ✗
   if (r.verdict.kind == VerdictKind::Undecided) return "?";
+  if (r.premise) return "\u2022";                                          // •
   return "\u2713";                                                           // ✓
 }
 
@@ -148,6 +149,7 @@ Totals totals(const std::vector<FileReport>& files) {
   for (const auto& f : files) {
     if (f.input_error) ++t.input_errors;
     t.steps += static_cast<int>(f.summary.results.size());
+    t.premises += f.summary.premises;
     t.proved += f.summary.proved;
     t.holds_numerically += f.summary.holds_numerically;
     t.refuted += f.summary.refuted;
@@ -175,7 +177,9 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       if (opt.quiet && ok && !r.erratum_reported) continue;
       std::string line = pos_text(s.pos) + ": " + mark(r) + " " + s.label;
       if (!s.tag.empty()) line += " (" + s.tag + ")";
-      line += " " + s.rule.written_name + " \u2014 " + verdict_phrase(r.verdict);
+      line += " " + s.rule.written_name + " \u2014 " +
+              (r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
+                                              : verdict_phrase(r.verdict));
       if (own > 0) line += "; " + std::to_string(own) + (own == 1 ? " error" : " errors");
       if (r.erratum_reported) line += "; erratum reported";
       if (opt.timings) line += " [" + seconds_text(r.seconds) + "]";
@@ -193,7 +197,8 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
     }
   }
   Totals t = totals(files);
-  out += std::to_string(t.steps) + " steps: " + std::to_string(t.proved) + " proved, " +
+  out += std::to_string(t.steps) + " steps: " + std::to_string(t.premises) + " premises, " +
+         std::to_string(t.proved) + " proved, " +
          std::to_string(t.holds_numerically) + " hold numerically, " + std::to_string(t.refuted) + " refuted, " +
          std::to_string(t.undecided) + " undecided, " + std::to_string(t.errors) + " errors (" +
          std::to_string(t.errata) + " errata reported)";
@@ -234,6 +239,7 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
       }
       nlohmann::ordered_json vj = verdict_json(r.verdict);
       for (auto& [k, v] : vj.items()) j[k] = v;
+      if (r.premise && r.verdict.holds()) j["verdict"] = "premise";
       j["derived"] = r.derived;
       j["dimension"] = r.dimension;
       nlohmann::ordered_json errs = nlohmann::ordered_json::array();
@@ -251,6 +257,7 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
   Totals t = totals(files);
   nlohmann::ordered_json sum;
   sum["steps"] = t.steps;
+  sum["premises"] = t.premises;
   sum["proved"] = t.proved;
   sum["holds_numerically"] = t.holds_numerically;
   sum["refuted"] = t.refuted;

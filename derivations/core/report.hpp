@@ -35,7 +35,7 @@ FileReport check_file(const std::string& path, const ProveOptions& opt = {});
 
 // Totals over files, and the exit code: 2 if any input error, else CheckSummary::exit_code.
 struct Totals {
-  int steps = 0, proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
+  int steps = 0, premises = 0, proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
   int input_errors = 0;
   double seconds = 0;
   int exit_code(bool strict) const;

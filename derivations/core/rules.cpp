@@ -1155,7 +1155,9 @@ CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt) {
     StepResult r = check_step(d, s, opt);
     std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
     if (r.erratum_reported) ++sum.errata;
+    r.premise = s.rule.name == "given" || s.rule.name == "definition";
     if (own_errors > 0) ++sum.errors;
+    else if (r.premise && r.verdict.holds()) ++sum.premises;
     else switch (r.verdict.kind) {
         case VerdictKind::Proved: ++sum.proved; break;
         case VerdictKind::HoldsNumerically: ++sum.holds_numerically; break;

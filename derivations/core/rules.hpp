@@ -18,6 +18,7 @@ struct StepResult {
   std::string dimension;     // "kg·m/s" (common dimension of the sides) or ""
   std::vector<InputError> errors;   // dimension mismatches, undefined symbols (erratum), ...
   bool erratum_reported = false;    // the printed claim's error was reported; corrected form checked
+  bool premise = false;             // rule given/definition: a premise, checked only for symbols and dimensions
   double seconds = 0;
 };
 
@@ -25,6 +26,7 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
 
 struct CheckSummary {
   std::vector<StepResult> results;
+  int premises = 0;   // given/definition steps: not claims, so never counted as proved
   int proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
   int exit_code(bool strict) const;   // 0 / 1 / 2 / 3 as in docs/format.md
 };

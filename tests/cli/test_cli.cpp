@@ -82,11 +82,11 @@ TEST_CASE("check prints one line per step with position, mark, label, tag, rule 
   Run r = run({"check", src("tests/data/cli/refuted.dc")});
   std::string f = src("tests/data/cli/refuted.dc");
   CAPTURE(r.out);
-  CHECK(r.out.find(f + ":5:7: \u2713 momentum (9.6) given \u2014 proved (given)\n") != std::string::npos);
+  CHECK(r.out.find(f + ":5:7: \u2022 momentum (9.6) given \u2014 premise (symbols and dimensions checked)\n") != std::string::npos);
   CHECK(r.out.find(f + ":9:1: \u2717 v1p_wrong solve \u2014 refuted") != std::string::npos);
   CHECK(r.out.find("    counterexample: m1 = ") != std::string::npos);
   CHECK(r.out.find("    left side = ") != std::string::npos);
-  CHECK(r.out.find("3 steps: 2 proved, 0 hold numerically, 1 refuted, 0 undecided, 0 errors (0 errata reported)\n") !=
+  CHECK(r.out.find("3 steps: 2 premises, 0 proved, 0 hold numerically, 1 refuted, 0 undecided, 0 errors (0 errata reported)\n") !=
         std::string::npos);
   CHECK(r.out.find(" ms]") == std::string::npos);   // no times without --timings
   Run t = run({"check", "--timings", f});

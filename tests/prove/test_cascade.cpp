@@ -117,7 +117,7 @@ TEST_CASE("exp(pi*sqrt(163)) = 640320^3 + 744 is refuted (needs 50 digits)", "[p
           GiNaC::ex_to<GiNaC::numeric>(rhs).to_double());
 }
 
-TEST_CASE("acos(1-2z^2) = 2 asin(z): holds on [0,1], refuted on [-1,0)", "[prove][probe]") {
+TEST_CASE("acos(1-2z^2) = 2 asin(z): holds for z in 0..1, refuted for z in -1..0", "[prove][probe]") {
   test::Table T = standard_table();
   auto claim = [&](const ex& z) { return std::make_pair(GiNaC::acos(1 - 2 * z * z), 2 * GiNaC::asin(z)); };
   auto [l1, r1] = claim(T["z"]);
