@@ -8,6 +8,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <sys/wait.h>
 
 namespace {
 
@@ -50,4 +51,16 @@ TEST_CASE("the handout map lists every tagged handout equation", "[docs]") {
     CAPTURE(tag);
     CHECK(committed.find(tag) != std::string::npos);
   }
+}
+
+TEST_CASE("README's example output is what 'derivcheck check' prints now", "[docs]") {
+  const std::string src = DERIVCHECK_SOURCE_DIR;
+  int status = 0;
+  std::string out = run(std::string("cd '") + src + "' && '" + DERIVCHECK_CLI + "' check docs/examples/quickstart.dc",
+                        &status);
+  CHECK(WEXITSTATUS(status) == 1);   // the example contains a refuted step on purpose
+  std::string readme = slurp(src + "/README.md");
+  std::string block = "```console\n$ derivcheck check docs/examples/quickstart.dc\n" + out + "```";
+  INFO("regenerate with: tools/update-readme.sh build/derivcheck");
+  REQUIRE(readme.find(block) != std::string::npos);
 }
