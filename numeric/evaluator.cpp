@@ -125,15 +125,22 @@ class Compiler {
       std::ostringstream os;
       os << e;
       k = "c:" + os.str();
-    } else if (is_a<GiNaC::add>(e) || is_a<GiNaC::mul>(e)) {
+    } else if (is_a<GiNaC::add>(e)) {
       std::vector<std::string> parts;
-      for (std::size_t i = 0; i < e.nops(); ++i) parts.push_back(key(e.op(i)));
+      for (std::size_t i = 0; i < e.nops(); ++i) parts.push_back(product_key(product_of(e.op(i))));
       std::sort(parts.begin(), parts.end());
-      k = is_a<GiNaC::add>(e) ? "+(" : "*(";
+      k = "+(";
       for (const auto& p : parts) k += p + ",";
       k += ")";
+    } else if (is_a<GiNaC::mul>(e)) {
+      k = product_key(product_of(e));
     } else if (is_a<GiNaC::power>(e)) {
-      k = "^(" + key(e.op(0)) + "," + key(e.op(1)) + ")";
+      if (is_int_power_of_sum(e)) {
+        bool flip = false;  // the sign is the enclosing product's business (product_of)
+        k = "^(" + key(orient_add(e.op(0), flip)) + "," + key(e.op(1)) + ")";
+      } else {
+        k = "^(" + key(e.op(0)) + "," + key(e.op(1)) + ")";
+      }
     } else if (is_a<GiNaC::function>(e)) {
       k = ex_to<GiNaC::function>(e).get_name() + "(";
       for (std::size_t i = 0; i < e.nops(); ++i) k += key(e.op(i)) + ",";
@@ -144,6 +151,84 @@ class Compiler {
       throw std::invalid_argument("evaluator: cannot compile '" + os.str() + "'");
     }
     return keys_.emplace(e, std::move(k)).first->second;
+  }
+
+  // ---- canonical orientation of sub-sums ----------------------------------------------
+  // GiNaC may store -e*m1*(v2 - v1) as e*m1*(v1 - v2), and which one it picks follows hash
+  // order, i.e. changes between processes (and rebuilding the product may flip it again). The
+  // value is the same, but the order in which the program adds terms, and so the rounding,
+  // would not be. So a product is never taken as GiNaC stores it: it is read as a coefficient
+  // times factors, each sum factor (and each sum raised to an integer power) turned to the
+  // orientation with the smaller canonical key, the flips folded into the coefficient's sign.
+  // Keys of products are computed from this form, so they do not depend on GiNaC's choice.
+  struct Product {
+    GiNaC::numeric coeff{1};
+    std::vector<ex> factors;  // sorted by key
+  };
+
+  static bool is_int_power_of_sum(const ex& f) {
+    return is_a<GiNaC::power>(f) && is_a<GiNaC::add>(f.op(0)) && is_a<GiNaC::numeric>(f.op(1)) &&
+           ex_to<GiNaC::numeric>(f.op(1)).is_integer();
+  }
+
+  // a or -a, whichever has the smaller key (-a is built by distributing -1 over the terms, which
+  // GiNaC does without touching the terms' factors)
+  // Preference: fewer negative terms (m1 + m2, not -m1 - m2, which would cost a negation),
+  // then the smaller key.
+  int negative_terms(const ex& a) {
+    int n = 0;
+    for (std::size_t i = 0; i < a.nops(); ++i) {
+      const ex t = a.op(i);
+      const ex c = is_a<GiNaC::mul>(t) ? t.op(t.nops() - 1) : t;
+      if (is_a<GiNaC::numeric>(c) && ex_to<GiNaC::numeric>(c).is_negative()) ++n;
+    }
+    return n;
+  }
+
+  ex orient_add(const ex& a, bool& negate) {
+    const ex neg = -a;
+    const int na = negative_terms(a), nn = negative_terms(neg);
+    if (nn < na || (nn == na && key(neg) < key(a))) {
+      negate = !negate;
+      return neg;
+    }
+    return a;
+  }
+
+  Product product_of(const ex& e) {
+    Product p;
+    bool negate = false;
+    auto take = [&](const ex& f) {
+      if (is_a<GiNaC::numeric>(f) && ex_to<GiNaC::numeric>(f).is_rational())
+        p.coeff *= ex_to<GiNaC::numeric>(f);
+      else if (is_a<GiNaC::add>(f))
+        p.factors.push_back(orient_add(f, negate));
+      else if (is_int_power_of_sum(f)) {
+        // kept as written; compiled with the oriented base (compile_base_power), and an odd
+        // power's sign goes to the coefficient
+        bool flip = false;
+        orient_add(f.op(0), flip);
+        if (flip && ex_to<GiNaC::numeric>(f.op(1)).is_odd()) negate = !negate;
+        p.factors.push_back(f);
+      } else
+        p.factors.push_back(f);
+    };
+    if (is_a<GiNaC::mul>(e))
+      for (std::size_t i = 0; i < e.nops(); ++i) take(e.op(i));
+    else
+      take(e);
+    if (negate) p.coeff = -p.coeff;
+    std::stable_sort(p.factors.begin(), p.factors.end(),
+                     [&](const ex& a, const ex& b) { return key(a) < key(b); });
+    return p;
+  }
+
+  std::string product_key(const Product& p) {
+    std::ostringstream os;
+    os << p.coeff;
+    std::string k = "*(#" + os.str();
+    for (const ex& f : p.factors) k += "," + key(f);
+    return k + ")";
   }
 
   std::vector<ex> sorted_ops(const ex& e) {
@@ -190,6 +275,9 @@ class Compiler {
 
   // ---- compilation ---------------------------------------------------------------------
   std::uint32_t compile(const ex& e) {
+    // an integer power of a sum is compiled as a product, whose key carries the sign that
+    // orienting the sum may move out of the power
+    if (is_int_power_of_sum(e)) return compile_product(product_of(e));
     const std::string& k = key(e);
     auto it = memo_.find(k);
     if (it != memo_.end()) return it->second;
@@ -222,7 +310,7 @@ class Compiler {
       return constant(ex_to<GiNaC::numeric>(v));
     }
     if (is_a<GiNaC::add>(e)) return compile_add(e);
-    if (is_a<GiNaC::mul>(e)) return compile_mul(e);
+    if (is_a<GiNaC::mul>(e)) return compile_product(product_of(e));
     if (is_a<GiNaC::power>(e)) return compile_power(e);
     if (is_a<GiNaC::function>(e)) return compile_function(e);
     std::ostringstream os;
@@ -230,29 +318,16 @@ class Compiler {
     throw std::invalid_argument("evaluator: cannot compile '" + os.str() + "'");
   }
 
-  // term = coeff * rest with coeff a rational number
-  static std::pair<GiNaC::numeric, ex> split_coeff(const ex& t) {
-    if (is_a<GiNaC::numeric>(t)) return {ex_to<GiNaC::numeric>(t), ex(1)};
-    if (is_a<GiNaC::mul>(t)) {
-      const ex last = t.op(t.nops() - 1);
-      if (is_a<GiNaC::numeric>(last) && ex_to<GiNaC::numeric>(last).is_rational()) {
-        const GiNaC::numeric c = ex_to<GiNaC::numeric>(last);
-        return {c, GiNaC::ex(t / c)};
-      }
-    }
-    return {GiNaC::numeric(1), t};
-  }
-
-  // |c| * rest with c rational: p/q applied as (rest * p) / q so that 1/3 is not rounded.
-  std::uint32_t scaled(const GiNaC::numeric& absc, const ex& rest) {
-    if (rest.is_equal(ex(1))) return constant(absc);
-    std::uint32_t r = compile(rest);
+  // |c| * (product of factors) with c = p/q rational, applied as (product * p) / q so that
+  // x/3 is a correctly rounded division, not a multiplication by a rounded 1/3.
+  std::uint32_t scaled(const GiNaC::numeric& absc, const std::vector<ex>& factors) {
+    if (factors.empty()) return constant(absc);
+    Product unit;
+    unit.factors = factors;
+    std::uint32_t r = compile_product(unit);
     const GiNaC::numeric p = absc.numer(), q = absc.denom();
     if (!p.is_equal(GiNaC::numeric(1))) r = emit(Op::Mul, constant(p), r);
-    if (!q.is_equal(GiNaC::numeric(1))) {
-      // division by a power of two is exact as a multiplication too; keep it a division
-      r = emit(Op::Div, r, constant(q));
-    }
+    if (!q.is_equal(GiNaC::numeric(1))) r = emit(Op::Div, r, constant(q));
     return r;
   }
 
@@ -282,11 +357,20 @@ class Compiler {
       }
     }
     std::vector<std::uint32_t> pos = fused_pos, neg;
+    // terms in key order of their oriented product form (independent of GiNaC's choices)
+    std::vector<std::pair<std::string, Product>> prods;
     for (const ex& t : terms) {
-      auto [c, rest] = split_coeff(t);
-      if (c.is_zero()) continue;
-      const std::uint32_t r = scaled(GiNaC::abs(c), rest);
-      (c.is_negative() ? neg : pos).push_back(r);
+      Product pr = product_of(t);
+      if (pr.coeff.is_zero()) continue;
+      Product unit;
+      unit.factors = pr.factors;
+      prods.emplace_back(product_key(unit) + "|" + product_key(pr), std::move(pr));
+    }
+    std::stable_sort(prods.begin(), prods.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (const auto& [k, pr] : prods) {
+      const std::uint32_t r = scaled(GiNaC::abs(pr.coeff), pr.factors);
+      (pr.coeff.is_negative() ? neg : pos).push_back(r);
     }
     std::uint32_t acc;
     std::size_t ni = 0;
@@ -318,25 +402,27 @@ class Compiler {
     return acc;
   }
 
-  std::uint32_t compile_mul(const ex& e) {
-    GiNaC::numeric coeff(1);
-    std::vector<ex> num, den;  // den holds the positive-exponent form of 1/den factors
-    for (const ex& f : sorted_ops(e)) {
-      if (is_a<GiNaC::numeric>(f) && ex_to<GiNaC::numeric>(f).is_rational()) {
-        coeff *= ex_to<GiNaC::numeric>(f);
-      } else if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
-                 ex_to<GiNaC::numeric>(f.op(1)).is_negative() && !is_constant_expr(f)) {
+  std::uint32_t compile_product(const Product& pr) {
+    const std::string pk = product_key(pr);
+    auto memo = memo_.find(pk);
+    if (memo != memo_.end()) return memo->second;
+    const GiNaC::numeric coeff = pr.coeff;
+    // factor = base^exp; den holds 1/den factors with their exponent made positive
+    std::vector<std::pair<ex, GiNaC::numeric>> num, den;
+    for (const ex& f : pr.factors) {
+      if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
+          ex_to<GiNaC::numeric>(f.op(1)).is_rational() && !is_constant_expr(f)) {
         const GiNaC::numeric n = ex_to<GiNaC::numeric>(f.op(1));
-        den.push_back(n.is_equal(GiNaC::numeric(-1)) ? f.op(0) : GiNaC::pow(f.op(0), -n));
+        (n.is_negative() ? den : num).emplace_back(f.op(0), GiNaC::abs(n));
       } else {
-        num.push_back(f);
+        num.emplace_back(f, GiNaC::numeric(1));
       }
     }
     std::vector<std::uint32_t> nr, dr;
     const GiNaC::numeric p = GiNaC::abs(coeff.numer()), q = coeff.denom();
-    for (const ex& f : num) nr.push_back(compile(f));
+    for (const auto& [b, n] : num) nr.push_back(compile_base_power(b, n));
     if (!p.is_equal(GiNaC::numeric(1))) nr.push_back(constant(p));
-    for (const ex& f : den) dr.push_back(compile(f));
+    for (const auto& [b, n] : den) dr.push_back(compile_base_power(b, n));
     if (!q.is_equal(GiNaC::numeric(1))) dr.push_back(constant(q));
     std::uint32_t r;
     if (dr.empty()) {
@@ -349,10 +435,10 @@ class Compiler {
         std::size_t first = 0;
         if (opt_.ratio_first && nr.size() > 1) {
           std::set<std::string> dsyms;
-          for (const ex& f : den) symbols_of(f, dsyms);
+          for (const auto& f : den) symbols_of(f.first, dsyms);
           for (std::size_t i = 0; i < num.size(); ++i) {
             std::set<std::string> s;
-            symbols_of(num[i], s);
+            symbols_of(num[i].first, s);
             if (std::any_of(s.begin(), s.end(), [&](const std::string& x) { return dsyms.count(x); })) {
               first = i;
               break;
@@ -368,6 +454,7 @@ class Compiler {
       }
     }
     if (coeff.is_negative()) r = emit(Op::Neg, r);
+    memo_[pk] = r;
     return r;
   }
 
@@ -387,27 +474,34 @@ class Compiler {
     return have ? result : one();
   }
 
+  // base^n for a positive rational n; a sum raised to an integer power is compiled with its
+  // oriented base (the caller's product coefficient carries the sign)
+  std::uint32_t compile_base_power(const ex& b, const GiNaC::numeric& an) {
+    if (an > GiNaC::numeric(1000000)) throw std::invalid_argument("evaluator: exponent too large");
+    if (an.is_integer()) {
+      bool flip = false;
+      const ex base = is_a<GiNaC::add>(b) ? orient_add(b, flip) : b;
+      return int_power(compile(base), an.to_long());
+    }
+    if (an.denom().is_equal(GiNaC::numeric(2))) {
+      std::uint32_t s;
+      if (opt_.fuse_hypot && an.numer().is_equal(GiNaC::numeric(1)) && hypot_args(b)) {
+        s = emit(Op::Hypot, compile(hypot_a_), compile(hypot_b_));
+      } else {
+        s = emit(Op::Sqrt, compile(b));
+      }
+      return int_power(s, an.numer().to_long());
+    }
+    return emit(Op::Pow, compile(b), constant(an));
+  }
+
   std::uint32_t compile_power(const ex& e) {
     const ex b = e.op(0), x = e.op(1);
     if (is_a<GiNaC::numeric>(x) && ex_to<GiNaC::numeric>(x).is_rational()) {
       const GiNaC::numeric n = ex_to<GiNaC::numeric>(x);
       if (GiNaC::abs(n) > GiNaC::numeric(1000000))
         throw std::invalid_argument("evaluator: exponent too large");
-      const GiNaC::numeric an = GiNaC::abs(n);
-      std::uint32_t r;
-      if (an.is_integer()) {
-        r = int_power(compile(b), an.to_long());
-      } else if (an.denom().is_equal(GiNaC::numeric(2))) {
-        std::uint32_t s;
-        if (opt_.fuse_hypot && an.numer().is_equal(GiNaC::numeric(1)) && hypot_args(b)) {
-          s = emit(Op::Hypot, compile(hypot_a_), compile(hypot_b_));
-        } else {
-          s = emit(Op::Sqrt, compile(b));
-        }
-        r = int_power(s, an.numer().to_long());
-      } else {
-        r = emit(Op::Pow, compile(b), constant(an));
-      }
+      const std::uint32_t r = compile_base_power(b, GiNaC::abs(n));
       return n.is_negative() ? emit(Op::Div, one(), r) : r;
     }
     return emit(Op::Pow, compile(b), compile(x));
