@@ -130,7 +130,7 @@ inline void apply_block(Op op, T* __restrict d, const T* __restrict a, const T* 
 template <class T>
 class Evaluator {
  public:
-  static constexpr std::size_t kBlock = 128;  // points per block in eval_batch
+  static constexpr std::size_t kBlock = 256;  // points per block in eval_batch
 
   Evaluator() = default;
   explicit Evaluator(Program p) : prog_(std::move(p)) {

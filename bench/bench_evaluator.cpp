@@ -1,0 +1,150 @@
+// The fast evaluator against a hand-written C++ function of the same formula, and GiNaC evalf,
+// in one run. Formula: the general impact v'1 = (m1 v1 + m2 v2 - e m2 (v1 - v2))/(m1 + m2),
+// loaded by label from derivations/handout9/05_direct_impact.dc (v1p_general).
+// Throughput = items_per_second (evaluations per second). Figures: docs/performance.md.
+#include <benchmark/benchmark.h>
+
+#include <random>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/prove.hpp"
+#include "numeric/evaluator.hpp"
+
+namespace {
+
+constexpr std::size_t kPoints = 4096;
+
+struct Data {
+  dc::Formula f;
+  std::vector<GiNaC::ex> syms;  // the table's symbols (possymbols), for subs
+  dc::num::Program prog;
+  Eigen::ArrayXXd in;  // columns m1, m2, v1, v2, e (the formula's parameter order)
+  Data() {
+    static const dc::Derivation d =
+        dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/derivations/handout9/05_direct_impact.dc");
+    f = dc::formula(d, "v1p_general");
+    prog = dc::num::compile(f.expr, f.params);
+    std::vector<std::string> names;
+    for (const auto& s : f.params) {
+      names.push_back(s.get_name());
+      syms.push_back(d.symbols.find(s.get_name())->sym);
+    }
+    if (names != std::vector<std::string>{"m1", "m2", "v1", "v2", "e"}) throw std::runtime_error("unexpected parameter order");
+    std::mt19937_64 rng(1);
+    std::uniform_real_distribution<double> u(0.1, 10.0);
+    in.resize(kPoints, 5);
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      in(i, 0) = u(rng);
+      in(i, 1) = u(rng);
+      in(i, 2) = u(rng) + 10;
+      in(i, 3) = u(rng);
+      in(i, 4) = u(rng) / 10;
+    }
+  }
+};
+
+const Data& data() {
+  static const Data d;
+  return d;
+}
+
+// (9.6)/(9.7) solved: the hand-written reference implementation
+inline double v1p_hand(double m1, double m2, double v1, double v2, double e) {
+  return (m1 * v1 + m2 * v2 - e * m2 * (v1 - v2)) / (m1 + m2);
+}
+
+void BM_hand_written(benchmark::State& st) {
+  const auto& D = data();
+  const double *m1 = D.in.col(0).data(), *m2 = D.in.col(1).data(), *v1 = D.in.col(2).data(),
+               *v2 = D.in.col(3).data(), *e = D.in.col(4).data();
+  std::vector<double> out(kPoints);
+  for (auto _ : st) {
+    for (std::size_t i = 0; i < kPoints; ++i) out[i] = v1p_hand(m1[i], m2[i], v1[i], v2[i], e[i]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+// The same loop, with the compiler prevented from vectorising across points (one call at a
+// time, as a scalar library function would be used).
+void BM_hand_written_scalar(benchmark::State& st) {
+  const auto& D = data();
+  std::vector<double> out(kPoints);
+  for (auto _ : st) {
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      double a = D.in(i, 0), b = D.in(i, 1), c = D.in(i, 2), d = D.in(i, 3), e = D.in(i, 4);
+      benchmark::DoNotOptimize(a);
+      out[i] = v1p_hand(a, b, c, d, e);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+void BM_tape_scalar(benchmark::State& st) {
+  const auto& D = data();
+  dc::num::Evaluator<double> ev(D.prog);
+  std::vector<double> out(kPoints);
+  double x[5];
+  for (auto _ : st) {
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      for (int j = 0; j < 5; ++j) x[j] = D.in(static_cast<Eigen::Index>(i), j);
+      out[i] = ev(x);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+void BM_tape_batch(benchmark::State& st) {
+  const auto& D = data();
+  dc::num::Evaluator<double> ev(D.prog);
+  Eigen::ArrayXd out(kPoints);
+  for (auto _ : st) {
+    ev.eval_batch(D.in, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+void BM_tape_batch_long_double(benchmark::State& st) {
+  const auto& D = data();
+  dc::num::Evaluator<long double> ev(D.prog);
+  const Eigen::Array<long double, Eigen::Dynamic, Eigen::Dynamic> in = D.in.cast<long double>();
+  Eigen::Array<long double, Eigen::Dynamic, 1> out(kPoints);
+  for (auto _ : st) {
+    ev.eval_batch(in, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+void BM_ginac_evalf(benchmark::State& st) {
+  const auto& D = data();
+  dc::DigitsGuard guard(15);
+  std::size_t i = 0;
+  for (auto _ : st) {
+    GiNaC::exmap m;
+    for (int j = 0; j < 5; ++j) m[D.syms[static_cast<std::size_t>(j)]] = D.in(static_cast<Eigen::Index>(i % kPoints), j);
+    benchmark::DoNotOptimize(GiNaC::evalf(D.f.expr.subs(m)));
+    ++i;
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+
+void BM_compile(benchmark::State& st) {
+  const auto& D = data();
+  for (auto _ : st) benchmark::DoNotOptimize(dc::num::compile(D.f.expr, D.f.params));
+}
+
+}  // namespace
+
+BENCHMARK(BM_hand_written);
+BENCHMARK(BM_hand_written_scalar);
+BENCHMARK(BM_tape_scalar);
+BENCHMARK(BM_tape_batch);
+BENCHMARK(BM_tape_batch_long_double);
+BENCHMARK(BM_ginac_evalf);
+BENCHMARK(BM_compile);
+BENCHMARK_MAIN();
