@@ -100,7 +100,11 @@ struct Formula {
   std::string label;
   std::string target;        // y
   GiNaC::ex expr;
-  std::vector<GiNaC::symbol> params;   // free symbols of expr, in declaration order
+  // Free symbols of expr, in declaration order. CAUTION: these are GiNaC::symbol copies, and
+  // copying a realsymbol/possymbol into a GiNaC::symbol slices it: the copy no longer compares
+  // equal to the symbol inside `expr`, so never use them as subs()/exmap keys. Use the name
+  // (params[i].get_name()) and Derivation::symbols.find(name)->sym for the real symbol.
+  std::vector<GiNaC::symbol> params;
   const Step* step = nullptr;
 };
 Formula formula(const Derivation& d, const std::string& label);
