@@ -3,6 +3,8 @@
 // process, so this catches any leak of it). Runs the built binary DERIVCHECK_CLI.
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -31,7 +33,8 @@ struct Run {
 
 Run run(const std::vector<std::string>& args) {
   static int counter = 0;
-  std::string errfile = "derivcheck_cli_test_stderr_" + std::to_string(++counter) + ".txt";
+  // ctest runs test cases as parallel processes: the pid keeps their files apart.
+  std::string errfile = "derivcheck_cli_test_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(++counter) + ".txt";
   std::string cmd = quote(DERIVCHECK_CLI);
   for (const auto& a : args) cmd += " " + quote(a);
   cmd += " 2>" + errfile;

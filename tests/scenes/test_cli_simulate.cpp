@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <unistd.h>
+
 using Catch::Matchers::Contains;
 
 namespace {
@@ -21,7 +23,9 @@ struct Run {
 Run simulate(const std::string& args) {
   REQUIRE(std::filesystem::exists(DERIVCHECK_CLI));  // build the derivcheck target first
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string out = (dir / "dc_sim_out.txt").string(), err = (dir / "dc_sim_err.txt").string();
+  // ctest runs test cases as parallel processes: the pid keeps their files apart.
+  const std::string tag = std::to_string(::getpid());
+  const std::string out = (dir / ("dc_sim_out_" + tag + ".txt")).string(), err = (dir / ("dc_sim_err_" + tag + ".txt")).string();
   const std::string cmd = std::string("cd ") + DERIVCHECK_SOURCE_DIR + " && " + DERIVCHECK_CLI + " simulate " + args +
                           " >" + out + " 2>" + err;
   const int status = std::system(cmd.c_str());
@@ -73,7 +77,7 @@ TEST_CASE("simulate: --list, --describe and --csv", "[scenes][cli]") {
   CHECK_THAT(simulate("--list").out, Contains("spring") && Contains("ladder") && Contains("cannon"));
   const Run d = simulate("chain --describe");
   CHECK_THAT(d.out, Contains("x'' = g") && Contains("[kg]") && Contains("0 <= x <= L"));
-  const auto csv = (std::filesystem::temp_directory_path() / "dc_sim_chain.csv").string();
+  const auto csv = (std::filesystem::temp_directory_path() / ("dc_sim_chain_" + std::to_string(::getpid()) + ".csv")).string();
   std::filesystem::remove(csv);
   REQUIRE(simulate("chain --csv " + csv).code == 0);
   std::ifstream in(csv);
