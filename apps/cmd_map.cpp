@@ -1,7 +1,7 @@
 // derivcheck map DIR... [--tests DIR] [-o FILE]
 // Writes the handout map (docs/handout9.md): every step of every derivation file, its handout
 // tag, file:line, rule, verdict, and the tests that check it (the ctest test made by
-// derivcheck_add_test for its file, plus every tests/**/*.cpp that names its label in quotes).
+// derivcheck_add_test for its file, plus every tests/**/*.cpp that names its file and its label in quotes).
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -35,9 +35,9 @@ std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
   return files;
 }
 
-// label -> test files (relative to the tests root) that mention "label" in quotes.
-std::map<std::string, std::set<std::string>> scan_tests(const std::string& root) {
-  std::map<std::string, std::set<std::string>> out;
+// The test sources under `root` (path as printed, text), in sorted order.
+std::vector<std::pair<std::string, std::string>> scan_tests(const std::string& root) {
+  std::vector<std::pair<std::string, std::string>> out;
   if (root.empty() || !fs::is_directory(root)) return out;
   std::vector<fs::path> paths;
   for (const auto& ent : fs::recursive_directory_iterator(root))
@@ -47,18 +47,19 @@ std::map<std::string, std::set<std::string>> scan_tests(const std::string& root)
     std::ifstream in(p);
     std::stringstream ss;
     ss << in.rdbuf();
-    std::string text = ss.str();
-    std::size_t pos = 0;
-    while ((pos = text.find('"', pos)) != std::string::npos) {
-      std::size_t end = text.find('"', pos + 1);
-      if (end == std::string::npos) break;
-      std::string word = text.substr(pos + 1, end - pos - 1);
-      if (!word.empty() && word.size() < 64 &&
-          std::all_of(word.begin(), word.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }))
-        out[word].insert(fs::relative(p, fs::path(root).parent_path()).string());
-      pos = end + 1;
-    }
+    out.emplace_back((fs::path(root) / fs::relative(p, root)).generic_string(), ss.str());
   }
+  return out;
+}
+
+// A test checks a step when it names the step's file (its stem, e.g. 05_direct_impact) and the
+// step's label in quotes.
+std::vector<std::string> tests_of(const std::vector<std::pair<std::string, std::string>>& tests,
+                                  const std::string& stem, const std::string& label) {
+  std::vector<std::string> out;
+  const std::string quoted = "\"" + label + "\"";
+  for (const auto& [path, text] : tests)
+    if (text.find(stem) != std::string::npos && text.find(quoted) != std::string::npos) out.push_back(path);
   return out;
 }
 
@@ -106,9 +107,8 @@ static dc::cli::CommandRegistrar reg_map(
             if (r.erratum_reported) verdict = "erratum reported; corrected form " + verdict;
             else if (!r.errors.empty()) verdict = "error";
             std::string tests_cell = "ctest `derivation: handout9/" + fs::path(f).stem().string() + "`";
-            auto it = test_refs.find(s.label);
-            if (it != test_refs.end())
-              for (const auto& t : it->second) tests_cell += ", `" + t + "`";
+            for (const auto& t : tests_of(test_refs, fs::path(f).stem().string(), s.label))
+              tests_cell += ", `" + t + "`";
             md << "| " << (s.tag.empty() ? "" : "(" + s.tag + ")") << " | `" << s.label << "` | "
                << rel << ":" << s.pos.line << " | " << s.rule.written_name << " | " << md_escape(verdict)
                << " | " << tests_cell << " |\n";
