@@ -14,7 +14,9 @@
 #include "apps/commands.hpp"
 #include "derivations/core/derivation.hpp"
 #include "derivations/core/io.hpp"
+#include "numeric/chart_checker.hpp"
 #include "numeric/chart_data.hpp"
+#include "numeric/chart_ode_maps.hpp"
 #include "numeric/chart_plot.hpp"
 #include "numeric/evaluator.hpp"
 
@@ -33,6 +35,8 @@ struct ChartArgs {
   std::vector<std::string> positional;
   std::string inputs, points_file, out_file;
   bool no_figures = false;
+  // checker
+  std::string corpus, ks = "1,2,4,8", digits = "20,30,50,100";
 };
 
 std::vector<std::string> split(const std::string& s, char c = ',') {
@@ -177,6 +181,103 @@ int run_maps(const ChartArgs& a) {
   }
   dc::write_file_atomic(a.out + "/map_stiff_spring.csv", to_table(stiff).to_csv());
   say_written({a.out + "/map_stiff_spring.csv"});
+
+  // the chain's first-order ODE from rest against the second-order model
+  const auto chain = chain_from_rest_map(1e-3, std::max(2, a.steps / 2));
+  if (!a.no_figures) {
+    std::map<std::string, PlotSeries> by;
+    std::vector<std::string> order;
+    for (const auto& r : chain) {
+      const std::string name = (r.model.rfind("first", 0) == 0 ? "first order, " : "second order, ") + r.method;
+      if (!by.count(name)) order.push_back(name);
+      auto& s = by[name];
+      s.name = name;
+      s.points.push_back({r.t, std::max(r.abs_error, 1e-18), 0, 0});
+    }
+    Plot p;
+    p.title = "Stability map: chain from rest (h = 1e-3 s): x' = sqrt(2gx) never starts";
+    p.xlabel = "time since release t [s]";
+    p.ylabel = "error of x(t) vs g t^2/2 [m] (exact: 1e-18)";
+    for (const auto& m : order) p.series.push_back(by[m]);
+    say_written(write_figures(p, a.out + "/map_chain_from_rest"));
+  }
+  dc::write_file_atomic(a.out + "/map_chain_from_rest.csv", to_table(chain).to_csv());
+  say_written({a.out + "/map_chain_from_rest.csv"});
+
+  // event location in the bounce
+  const auto bounce = bounce_event_map(std::max(2, a.steps / 4));
+  if (!a.no_figures) {
+    std::map<std::string, PlotSeries> by;
+    std::vector<std::string> order;
+    for (const auto& r : bounce) {
+      const std::string name = r.method + ", " + r.location;
+      if (!by.count(name)) order.push_back(name);
+      auto& s = by[name];
+      s.name = name;
+      s.points.push_back({r.h, std::max(r.rel_error, 1e-17), 0, 0});
+    }
+    Plot p;
+    p.title = "Stability map: two-ball bounce, events located vs taken at the step end";
+    p.xlabel = "step h [s] (dopri5: output spacing, tol 1e-10)";
+    p.ylabel = "relative error of the rebound velocity v'1 (exact: 1e-17)";
+    for (const auto& m : order) p.series.push_back(by[m]);
+    say_written(write_figures(p, a.out + "/map_bounce_events"));
+  }
+  dc::write_file_atomic(a.out + "/map_bounce_events.csv", to_table(bounce).to_csv());
+  say_written({a.out + "/map_bounce_events.csv"});
+  return 0;
+}
+
+// --- the checker's strategies ------------------------------------------------------------------
+std::vector<int> int_list(const std::string& s, const std::string& flag) {
+  std::vector<int> v;
+  for (const auto& item : split(s)) {
+    try {
+      std::size_t used = 0;
+      v.push_back(std::stoi(item, &used));
+      if (used != item.size()) throw std::invalid_argument("");
+    } catch (const std::logic_error&) {
+      throw std::invalid_argument(flag + ": '" + item + "' is not an integer");
+    }
+  }
+  if (v.empty()) throw std::invalid_argument(flag + ": empty list");
+  return v;
+}
+
+int run_checker(const ChartArgs& a) {
+  CheckerOptions o;
+  o.repeats = a.repeats;
+  o.ks = int_list(a.ks, "--k");
+  o.digits = int_list(a.digits, "--digits");
+  const std::string corpus = a.corpus.empty() ? a.root + "/tests/data/corpus.jsonl" : a.corpus;
+  const auto rows = checker_wp(corpus, o);
+  if (!a.no_figures && a.csv.empty()) {
+    std::map<std::string, PlotSeries> by;
+    std::vector<std::string> order;
+    std::map<std::string, int> fa;
+    for (const auto& r : rows) fa[r.family] += r.false_accepts;
+    for (const auto& r : rows) {
+      std::string name = r.family == "symbolic" ? "symbolic only"
+                         : r.family == "cascade" ? "full cascade (" + std::to_string(r.k) + " points, " + std::to_string(r.digits) + " digits)"
+                                                 : r.family + ", k = " + a.ks;
+      name += ", false accepts " + std::to_string(fa[r.family]);
+      if (!by.count(r.family)) order.push_back(r.family);
+      auto& s = by[r.family];
+      s.name = name;
+      s.bars = true;
+      s.points.push_back({r.accuracy, r.seconds.median, r.seconds.min, r.seconds.max});
+    }
+    Plot p;
+    p.title = "Work-precision of the checker: " + std::to_string(rows.front().claims) + " labelled claims (tests/data/corpus.jsonl)";
+    p.xlabel = "verdict accuracy (fraction judged correctly; undecided = not correct) [1]";
+    p.ylabel = "time per claim [s]";
+    p.logx = false;
+    for (const auto& f : order) p.series.push_back(by[f]);
+    say_written(write_figures(p, a.out + "/wp_checker"));
+  }
+  const std::string csv = a.csv.empty() ? a.out + "/wp_checker.csv" : a.csv;
+  dc::write_file_atomic(csv, to_table(rows).to_csv());
+  say_written({csv});
   return 0;
 }
 
@@ -235,9 +336,9 @@ const dc::cli::CommandRegistrar reg(
     "chart", "work-precision charts and stability maps: CSV, PNG, SVG, pgfplots (docs/charts.md)",
     [](CLI::App& sub) -> std::function<int()> {
       auto a = std::make_shared<ChartArgs>();
-      sub.add_option("kind", a->kind, "closed | scenes | maps | all | evalpoints")
+      sub.add_option("kind", a->kind, "closed | scenes | maps | checker | all | evalpoints")
           ->required()
-          ->check(CLI::IsMember({"closed", "scenes", "maps", "all", "evalpoints"}));
+          ->check(CLI::IsMember({"closed", "scenes", "maps", "checker", "all", "evalpoints"}));
       sub.add_option("args", a->positional, "evalpoints: FILE LABEL");
       sub.add_option("--formula", a->formulas, "closed: FILE:LABEL (repeatable; default: five handout formulas)");
       sub.add_option("--scenes", a->scenes, "scenes: comma-separated scene names")->capture_default_str();
@@ -249,6 +350,9 @@ const dc::cli::CommandRegistrar reg(
       sub.add_option("--out", a->out, "output directory")->capture_default_str();
       sub.add_option("--root", a->root, "project root (for derivations/handout9)")->capture_default_str();
       sub.add_option("--csv", a->csv, "write only this CSV (no figures)");
+      sub.add_option("--corpus", a->corpus, "checker: labelled claim corpus (default ROOT/tests/data/corpus.jsonl)");
+      sub.add_option("--k", a->ks, "checker: probe point counts")->capture_default_str();
+      sub.add_option("--digits", a->digits, "checker: probe precisions (>= 20)")->capture_default_str();
       sub.add_flag("--no-figures", a->no_figures, "CSV only");
       sub.add_option("--inputs", a->inputs, "evalpoints: parameter order of the points file");
       sub.add_option("--points-file", a->points_file, "evalpoints: raw float64 points, row-major");
@@ -259,9 +363,11 @@ const dc::cli::CommandRegistrar reg(
           if (a->kind == "scenes") return run_scenes(*a);
           if (a->kind == "maps") return run_maps(*a);
           if (a->kind == "evalpoints") return run_evalpoints(*a);
+          if (a->kind == "checker") return run_checker(*a);
           run_closed(*a);
           run_scenes(*a);
-          return run_maps(*a);
+          run_maps(*a);
+          return run_checker(*a);
         } catch (const std::invalid_argument& e) {
           std::cerr << "derivcheck chart: error: " << e.what() << "\n";
           return dc::cli::kExitInputError;
