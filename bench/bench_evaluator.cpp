@@ -8,6 +8,7 @@
 
 #include "derivations/core/derivation.hpp"
 #include "derivations/core/prove.hpp"
+#include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
 
 namespace {
@@ -120,6 +121,32 @@ void BM_tape_batch_long_double(benchmark::State& st) {
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
 }
 
+// the same tape in double-double (compensated.hpp): what FormulaEvaluator's Auto mode runs for
+// v'1, whose value crosses zero in the domain
+void BM_tape_batch_compensated(benchmark::State& st) {
+  const auto& D = data();
+  dc::num::CompensatedEvaluator ev(D.prog);
+  Eigen::ArrayXd out(kPoints);
+  for (auto _ : st) {
+    ev.eval_batch(D.in, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+void BM_tape_scalar_compensated(benchmark::State& st) {
+  const auto& D = data();
+  dc::num::CompensatedEvaluator ev(D.prog);
+  std::vector<double> x(5);
+  std::size_t i = 0;
+  for (auto _ : st) {
+    for (int j = 0; j < 5; ++j) x[static_cast<std::size_t>(j)] = D.in(static_cast<Eigen::Index>(i), j);
+    benchmark::DoNotOptimize(ev(x.data()));
+    i = (i + 1) % kPoints;
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations()));
+}
+
 void BM_ginac_evalf(benchmark::State& st) {
   const auto& D = data();
   dc::DigitsGuard guard(15);
@@ -145,6 +172,8 @@ BENCHMARK(BM_hand_written_scalar);
 BENCHMARK(BM_tape_scalar);
 BENCHMARK(BM_tape_batch);
 BENCHMARK(BM_tape_batch_long_double);
+BENCHMARK(BM_tape_batch_compensated);
+BENCHMARK(BM_tape_scalar_compensated);
 BENCHMARK(BM_ginac_evalf);
 BENCHMARK(BM_compile);
 BENCHMARK_MAIN();

@@ -219,7 +219,7 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
       rep.stable_label = s->label;
       rep.stable_regime = s->stable_regime;
       try {
-        fe.emplace(d, f.label);
+        fe.emplace(d, f.label, EvalMode::Fast);
         if (!fe->has_stable()) {
           stable_problem = "needs inputs the formula does not have";
           fe.reset();
@@ -231,9 +231,14 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
     }
     Evaluator<double> ev_d(*naive);
     Evaluator<long double> ev_ld(*naive);
+    // compensated: the same choice of tape as the stable column (stable form in its regime),
+    // each evaluated in double-double; without a usable stable form the formula's own tape
+    std::optional<FormulaEvaluator> fc;
+    if (fe) fc.emplace(d, f.label, EvalMode::Compensated);
+    CompensatedEvaluator ev_dd(*naive);
 
     Checker ck(d, f, opt, mix(opt.seed, d.source.name + ":" + f.label));
-    Acc acc_d, acc_ld, acc_s;
+    Acc acc_d, acc_ld, acc_s, acc_c;
     auto run = [&](const Candidate& c) -> bool {
       auto p = ck.exact_point(c.x);
       if (!p) return false;
@@ -245,6 +250,8 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
       acc_d.add(error_in_ulps(vd, *ref), std::isfinite(vd), c);
       const long double vl = ev_ld(xl);
       acc_ld.add(error_in_ulps(vl, *ref), std::isfinite(vl), c);
+      const double vc = fc ? fc->compensated_value(xd) : ev_dd(xd);
+      acc_c.add(error_in_ulps(vc, *ref), std::isfinite(vc), c);
       if (fe) {
         const double vs = (*fe)(xd);
         if (fe->in_regime(xd.data())) ++rep.in_regime;
@@ -291,6 +298,7 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
     rep.methods.push_back(stats("long double", acc_ld));
     if (fe) rep.methods.push_back(stats("stable", acc_s));
     else if (!stable_problem.empty()) rep.skipped = "stable form " + rep.stable_label + ": " + stable_problem;
+    rep.methods.push_back(stats("compensated", acc_c));
     if (acc_d.errs.empty() && rep.skipped.empty())
       rep.skipped = "no valid point found in the declared domain";
     reports.push_back(std::move(rep));
@@ -298,9 +306,21 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
   return reports;
 }
 
+const MethodStats* best_method(const FormulaReport& r) {
+  const MethodStats* best = nullptr;
+  for (const MethodStats& m : r.methods) {
+    if (m.method == "long double" || m.points == 0) continue;  // not a double result
+    const double v = std::isnan(m.max_ulps) ? INFINITY : m.max_ulps;
+    if (!best || v < (std::isnan(best->max_ulps) ? INFINITY : best->max_ulps)) best = &m;
+  }
+  return best;
+}
+
 std::string format_crosscheck(const std::vector<FormulaReport>& reports, const CrossCheckOptions& opt) {
   std::string out;
   std::string file;
+  std::vector<std::string> over;
+  std::size_t evaluated = 0;
   char line[512];
   for (const FormulaReport& r : reports) {
     if (r.file != file) {
@@ -316,6 +336,7 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
       out += "  " + name + ": not evaluated: " + r.skipped + "\n";
       continue;
     }
+    ++evaluated;
     for (std::size_t k = 0; k < r.methods.size(); ++k) {
       const MethodStats& m = r.methods[k];
       std::string where;
@@ -324,11 +345,16 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
         for (const auto& [n, v] : m.worst_point) where += " " + n + "=" + v;
       }
       const std::string method = m.method == "stable" ? "stable(" + r.stable_label + ")" : m.method;
+
       std::snprintf(line, sizeof line, "  %-28s %-12s %5zu+%-3zu %8s %10s %10s  %s\n",
                     k == 0 ? name.c_str() : "", method.c_str(), m.points - m.stress_points,
                     m.stress_points, fmt(m.median_ulps).c_str(), fmt(m.max_ulps_random).c_str(),
                     fmt(m.max_ulps_stress).c_str(), where.c_str());
       out += line;
+    }
+    if (const MethodStats* b = best_method(r)) {
+      out += "  " + std::string(28, ' ') + " best: " + b->method + ", max " + fmt(b->max_ulps) + " ulps\n";
+      if (!(b->max_ulps <= 4)) over.push_back(r.label + " (" + b->method + " " + fmt(b->max_ulps) + ")");
     }
     if (!r.skipped.empty()) out += "  " + std::string(28, ' ') + " note: " + r.skipped + "\n";
     if (r.stable_regime.rfind("when ", 0) == 0 && !r.methods.empty()) {
@@ -338,6 +364,9 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
              r.stable_regime.substr(0, colon) + ")\n";
     }
   }
+  out += "\nbest method within 4 ulps (max over random and stress points): " +
+         std::to_string(evaluated - over.size()) + " of " + std::to_string(evaluated) + " formulas\n";
+  for (const std::string& o : over) out += "  over 4 ulps: " + o + "\n";
   std::string head = "derivcheck crosscheck: seed " + std::to_string(opt.seed) + ", " +
                      std::to_string(opt.points) + " random points per formula" +
                      (opt.stress ? " + stress points" : "") + ", reference CLN at " +

@@ -15,6 +15,7 @@
 #include <ginac/ginac.h>
 
 #include "derivations/core/derivation.hpp"
+#include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/formula_evaluator.hpp"
 
@@ -29,8 +30,9 @@ struct CrossCheckOptions {
 };
 
 struct MethodStats {
-  std::string method;       // "double", "long double", "stable" (the FormulaEvaluator: the
-                            // stable form in its regime, the formula elsewhere)
+  std::string method;       // "double", "long double", "stable" (the FormulaEvaluator in
+                            // EvalMode::Fast: the stable form in its regime, the formula
+                            // elsewhere), "compensated" (the same tapes in double-double)
   std::size_t points = 0;
   std::size_t stress_points = 0;
   double median_ulps = 0, max_ulps = 0;
@@ -52,6 +54,10 @@ struct FormulaReport {
 };
 
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt);
+
+// The method with the smallest max error among those that return a double ("double", "stable",
+// "compensated"; "long double" is not a double result). nullptr if none was evaluated.
+const MethodStats* best_method(const FormulaReport& r);
 
 // Human-readable table (deterministic for a given seed).
 std::string format_crosscheck(const std::vector<FormulaReport>& reports, const CrossCheckOptions& opt);

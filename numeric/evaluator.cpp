@@ -557,6 +557,10 @@ class Compiler {
         map[v] = next++;
         const GiNaC::numeric& c = const_values_.at(v);
         p.const_double.push_back(round_to_double(c));
+        p.const_double_lo.push_back(
+            std::isfinite(p.const_double.back())
+                ? round_to_double(c - exact_rational(p.const_double.back(), "constant"))
+                : 0.0);
         p.const_long_double.push_back(round_to_long_double(c));
         std::ostringstream os;
         os << c;

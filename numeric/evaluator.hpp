@@ -53,6 +53,7 @@ struct Program {
   std::vector<std::string> inputs;
   std::vector<double> const_double;
   std::vector<long double> const_long_double;
+  std::vector<double> const_double_lo;  // c - const_double[i] rounded: double-double constants
   std::vector<std::string> const_text;  // exact value as text (for listings)
   std::vector<Instr> code;
   std::uint32_t result = 0;
