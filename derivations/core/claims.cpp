@@ -234,14 +234,23 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
   }
   ex a, b;
   try {
-    a = to_ginac(l, table);
-  } catch (const InputError& e) {
-    throw quoted(e, lhs);
-  }
-  try {
-    b = to_ginac(r, table);
-  } catch (const InputError& e) {
-    throw quoted(e, rhs);
+    try {
+      a = to_ginac(l, table);
+    } catch (const InputError& e) {
+      throw quoted(e, lhs);
+    }
+    try {
+      b = to_ginac(r, table);
+    } catch (const InputError& e) {
+      throw quoted(e, rhs);
+    }
+  } catch (const UndecidedLimit& e) {
+    // A limit the helper cannot evaluate is not bad input: the claim is undecided.
+    Verdict v;
+    v.kind = VerdictKind::Undecided;
+    v.method = "limit";
+    v.reason = e.what();
+    return v;
   }
   Verdict v = prove_equal(a, b, table, opt);
   for (auto& sc : side_conditions(a - b, table)) v.side_conditions.push_back(sc);

@@ -44,8 +44,9 @@ ex resolve_symbol(const GiNaC::symbol& s, const ex& f) {
 std::string classify_series_failure(const std::string& what) {
   // GiNaC reports Puiseux terms (sqrt(eps)), essential singularities (exp(-1/eps)) and
   // logarithmic branch points as poles or "division by zero" during the expansion.
-  return "series in eps failed (" + what +
-         "): the expansion is not a Laurent series in eps (e.g. a Puiseux term sqrt(eps), an "
+  // `what` is GiNaC's own message (with its internal function names): not shown to users.
+  (void)what;
+  return "series in eps failed: the expansion is not a Laurent series in eps (e.g. a Puiseux term sqrt(eps), an "
          "essential singularity exp(-1/eps) or a logarithm)";
 }
 

@@ -166,6 +166,15 @@ TEST_CASE("equal: verdicts and exit codes", "[cli][equal]") {
   CHECK(run({"equal", "exp(pi*sqrt(163))", "640320^3+744"}).exit_code == 1);
 }
 
+TEST_CASE("equal: a limit the helper cannot evaluate is undecided, not a crash", "[cli][equal]") {
+  Run r = run({"equal", "limit(sin(1/x), x, 0)", "0"});
+  CHECK(r.exit_code == 3);
+  CHECK(r.out.rfind("undecided (limit)", 0) == 0);
+  CHECK(r.out.find("::") == std::string::npos);   // no GiNaC-internal names such as power::eval()
+  CHECK(r.err.empty());
+  CHECK(run({"equal", "limit(sin(x)/x, x, 0)", "1"}).exit_code == 0);
+}
+
 TEST_CASE("equal: malformed input is an error on stderr with exit 2", "[cli][equal][errors]") {
   Run a = run({"equal", "x +", "x"});
   CHECK(a.exit_code == 2);
