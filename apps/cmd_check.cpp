@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "apps/commands.hpp"
+#include "derivations/core/io.hpp"
 #include "derivations/core/report.hpp"
 
 namespace dc::cli {
@@ -14,28 +15,9 @@ struct CheckOptions {
   bool json = false, strict = false, quiet = false, timings = false;
 };
 
-// A directory stands for its *.dc files in sorted order; anything else is taken as a file
-// (a missing file becomes an input error of that file).
-std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
-  std::vector<std::string> out;
-  for (const auto& in : inputs) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(in, ec)) {
-      std::vector<std::string> files;
-      for (const auto& entry : std::filesystem::directory_iterator(in, ec))
-        if (entry.is_regular_file() && entry.path().extension() == ".dc") files.push_back(entry.path().string());
-      std::sort(files.begin(), files.end());
-      out.insert(out.end(), files.begin(), files.end());
-    } else {
-      out.push_back(in);
-    }
-  }
-  return out;
-}
-
 int run(const CheckOptions& o) {
   std::vector<FileReport> reports;
-  for (const auto& f : expand_inputs(o.inputs)) reports.push_back(check_file(f));
+  for (const auto& f : dc::derivation_files(o.inputs)) reports.push_back(check_file(f));
   ReportOptions ro;
   ro.timings = o.timings;
   ro.quiet = o.quiet;

@@ -22,27 +22,9 @@ struct LatexCliOptions {
   bool fragment = false, annotate = false;
 };
 
-std::vector<std::string> expand(const std::vector<std::string>& inputs) {
-  std::vector<std::string> out;
-  for (const auto& in : inputs) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(in, ec)) {
-      std::vector<std::string> files;
-      for (const auto& entry : std::filesystem::directory_iterator(in, ec))
-        if (entry.is_regular_file() && entry.path().extension() == ".dc") files.push_back(entry.path().string());
-      std::sort(files.begin(), files.end());
-      if (files.empty()) throw InputError({in, 0, 0}, "no .dc files in directory '" + in + "'");
-      out.insert(out.end(), files.begin(), files.end());
-    } else {
-      out.push_back(in);
-    }
-  }
-  return out;
-}
-
 int run(const LatexCliOptions& o) {
   std::vector<Derivation> ds;
-  for (const auto& f : expand(o.inputs)) ds.push_back(load_derivation(f));  // InputError -> exit 2
+  for (const auto& f : dc::derivation_files(o.inputs)) ds.push_back(load_derivation(f));  // InputError -> exit 2
   std::vector<const Derivation*> ptrs;
   for (const auto& d : ds) ptrs.push_back(&d);
   std::vector<CheckSummary> summaries;

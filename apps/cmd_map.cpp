@@ -19,22 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
-  std::vector<std::string> files;
-  for (const auto& in : inputs) {
-    if (fs::is_directory(in)) {
-      std::vector<std::string> here;
-      for (const auto& ent : fs::directory_iterator(in))
-        if (ent.path().extension() == ".dc") here.push_back(ent.path().string());
-      std::sort(here.begin(), here.end());
-      files.insert(files.end(), here.begin(), here.end());
-    } else {
-      files.push_back(in);
-    }
-  }
-  return files;
-}
-
 // The test sources under `root` (path as printed, text), in sorted order.
 std::vector<std::pair<std::string, std::string>> scan_tests(const std::string& root) {
   std::vector<std::pair<std::string, std::string>> out;
@@ -85,7 +69,7 @@ static dc::cli::CommandRegistrar reg_map(
       sub.add_option("--tests", *tests, "tests directory to scan for labels (e.g. tests)");
       sub.add_option("-o,--output", *output, "write to this file (atomically) instead of stdout");
       return [=]() -> int {
-        auto files = expand_inputs(*inputs);
+        auto files = dc::derivation_files(*inputs);
         auto test_refs = scan_tests(*tests);
         std::ostringstream md;
         md << "# Handout 9 map: every equation, where it is checked, and its tests\n\n"

@@ -4,6 +4,14 @@
 
 namespace dc {
 
+namespace {
+// "file:line:col" — or just "file" for errors about a whole file (line 0), as GCC does.
+std::string where(const SourcePos& p) {
+  if (p.line <= 0) return p.file;
+  return p.file + ":" + std::to_string(p.line) + ":" + std::to_string(p.col);
+}
+}  // namespace
+
 std::string SourceText::line(int line_no) const {
   if (line_no < 1) return {};
   std::size_t start = 0;
@@ -19,8 +27,7 @@ std::string SourceText::line(int line_no) const {
 }
 
 InputError::InputError(SourcePos pos, std::string message, int length, std::string line_text)
-    : std::runtime_error(pos.file + ":" + std::to_string(pos.line) + ":" + std::to_string(pos.col) +
-                         ": error: " + message),
+    : std::runtime_error(where(pos) + ": error: " + message),
       pos_(std::move(pos)),
       message_(std::move(message)),
       length_(std::max(1, length)),
@@ -31,8 +38,7 @@ InputError InputError::with_line_text(std::string text) const {
 }
 
 std::string InputError::format() const {
-  std::string out = pos_.file + ":" + std::to_string(pos_.line) + ":" + std::to_string(pos_.col) +
-                    ": error: " + message_ + "\n";
+  std::string out = where(pos_) + ": error: " + message_ + "\n";
   if (!line_text_.empty() && pos_.col >= 1) {
     // Show at most 200 characters around the column so huge inputs stay readable.
     std::size_t col = static_cast<std::size_t>(pos_.col - 1);
