@@ -68,8 +68,13 @@ DD exp_dd(const DD& x) {
 
 // log1p(a) in double-double: y0 = log1p in long double, then one Newton step on
 // exp(y) = 1 + a written without cancellation: y1 = y0 + a exp(-y0) + expm1(-y0)
+DD log_dd(const DD& x);
+
 DD log1p_dd(const DD& a) {
-  if (!(a.hi > -1.0) || !std::isfinite(a.hi)) return {std::log1p(a.hi), 0.0};
+  if (std::isnan(a.hi) || !std::isfinite(a.hi)) return {std::log1p(a.hi), 0.0};
+  // far from 0, 1 + a is formed in double-double without loss (exactly for a in [-1, -1/2]),
+  // which keeps log1p(-1 + 1e-162) finite and correct: its lo part carries the 1e-162
+  if (a.hi < -0.5 || a.hi > 1.0) return log_dd(add(a, DD{1.0, 0.0}));
   if (a.hi == 0.0) return a;
   const DD y0 = from_ld(std::log1p(to_ld(a)));
   const DD ny = neg(y0);
