@@ -320,7 +320,7 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
   std::string out;
   std::string file;
   std::vector<std::string> over;
-  std::size_t evaluated = 0;
+  std::size_t evaluated = 0, not_evaluated = 0;
   char line[512];
   for (const FormulaReport& r : reports) {
     if (r.file != file) {
@@ -334,6 +334,7 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
     if (!r.stable_of.empty()) name += " (stable of " + r.stable_of + ")";
     if (!r.skipped.empty() && r.methods.empty()) {
       out += "  " + name + ": not evaluated: " + r.skipped + "\n";
+      ++not_evaluated;
       continue;
     }
     ++evaluated;
@@ -365,7 +366,8 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
     }
   }
   out += "\nbest method within 4 ulps (max over random and stress points): " +
-         std::to_string(evaluated - over.size()) + " of " + std::to_string(evaluated) + " formulas\n";
+         std::to_string(evaluated - over.size()) + " of " + std::to_string(evaluated) +
+         " evaluated formulas (" + std::to_string(not_evaluated) + " not evaluated)\n";
   for (const std::string& o : over) out += "  over 4 ulps: " + o + "\n";
   std::string head = "derivcheck crosscheck: seed " + std::to_string(opt.seed) + ", " +
                      std::to_string(opt.points) + " random points per formula" +
