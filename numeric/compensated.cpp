@@ -148,6 +148,11 @@ namespace {
 
 // One instruction over n points, registers as separate hi and lo arrays. The switch is outside
 // the loops, so each loop is straight-line error-free arithmetic.
+// Cloned for CPUs with FMA (chosen at load time by GCC's ifunc dispatch): the baseline x86-64
+// build (no -march) would otherwise call libm's fma() for every TwoProd and vectorise nothing.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__FMA__)
+__attribute__((target_clones("fma", "default")))
+#endif
 void apply_block(Op op, double* __restrict dh, double* __restrict dl, const double* ah,
                  const double* al, const double* bh, const double* bl, std::size_t n) {
   switch (op) {
