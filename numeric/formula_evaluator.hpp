@@ -41,7 +41,7 @@ bool may_cancel(const Program& p, const SymbolTable& symbols);
 
 // How FormulaEvaluator::operator() evaluates.
 //   Fast:        the tapes in double.
-//   Compensated: the tapes in double-double (compensated.hpp), rounded at the end: ~10x slower.
+//   Compensated: the tapes in double-double (compensated.hpp), rounded at the end: ~20x slower (docs/performance.md).
 //   Auto:        Compensated iff the tape used (the stable form where the file has one, and in
 //                its regime; the formula otherwise) may cancel (may_cancel); otherwise Fast.
 //                A formula with a sign change in its domain (v'1, the rocket's v) may cancel;
