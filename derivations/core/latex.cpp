@@ -314,6 +314,7 @@ std::string hex4(std::uint32_t cp) {
 }
 
 std::string verdict_text(const StepResult& r) {
+  if (r.premise && r.verdict.holds()) return "$\\bullet$ premise";
   std::string s;
   switch (r.verdict.kind) {
     case VerdictKind::Proved: s = "$\\checkmark$ proved"; break;
