@@ -680,12 +680,19 @@ std::string domains_text(const ex& a, const SymbolTable& ctx) {
 }
 
 // Does an assumed constraint give the condition? (arg equals +-(lhs - rhs) of an assumption)
-bool constraint_implies(CondKind k, const ex& a, const Constraint& c) {
+// Does the constraint c fix the sign that condition k needs of a? True when a is the
+// constraint's difference lhs - rhs times a factor of evident sign (-g*(r2 - y2) from y2 > r2).
+bool constraint_implies(CondKind k, const ex& a, const Constraint& c, const SymbolTable& ctx) {
   ex cd = c.lhs - c.rhs;
   bool same = false, opposite = false;
   try {
     same = GiNaC::normal(a - cd).is_zero();
     opposite = !same && GiNaC::normal(a + cd).is_zero();
+    if (!same && !opposite && !cd.is_zero()) {
+      ex q = GiNaC::normal(a / cd);
+      same = d::provably_positive(q, ctx);
+      opposite = !same && d::provably_positive(-q, ctx);
+    }
   } catch (const std::exception&) {
     return false;
   }
@@ -733,7 +740,7 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
       continue;
     }
     for (const Constraint& c : ctx.constraints())
-      if (constraint_implies(rc.kind, rc.arg, c)) {
+      if (constraint_implies(rc.kind, rc.arg, c, ctx)) {
         sc.status = SideCondition::Status::Guaranteed;
         sc.evidence = "assumed: " + c.text;
         guaranteed = true;

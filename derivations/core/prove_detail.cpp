@@ -546,8 +546,33 @@ Range function_range(const GiNaC::function& f, const SymbolTable& ctx) {
   const std::string name = f.get_name();
   auto rat = [](long p, long q) { return numeric(p, q); };
   if (name == "exp") return make_range(false, 0, true, true, 0, true);
-  if (name == "sin" || name == "cos" || name == "tanh")
+  if (name == "sin" || name == "cos") {
+    // sin > 0 on (0, pi) and cos > 0 on (-pi/2, pi/2): the bounds below are rationals just
+    // inside pi and pi/2, so the test is exact and errs on the side of "not evident".
+    Range a = range_rec(f.op(0), ctx);
+    // Bounds like pi/2 arrive as padded 40-digit enclosures: a bound within 1e-28 of pi/2 counts
+    // as pi/2 itself, and then it must be open.
+    numeric half_pi;
+    {
+      DigitsGuard g(40);
+      half_pi = GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf());
+    }
+    const numeric eps = pow10(-28);  // wider than constant_range's outward padding (~1e-30 relative)
+    auto below = [&](const numeric& x, bool open, const numeric& bound) {
+      return x < bound - eps || (GiNaC::abs(x - bound) <= eps && open);
+    };
+    auto above = [&](const numeric& x, bool open, const numeric& bound) {
+      return x > bound + eps || (GiNaC::abs(x - bound) <= eps && open);
+    };
+    bool pos = false;
+    if (!a.lo_inf && !a.hi_inf) {
+      if (name == "sin") pos = above(a.lo, a.lo_open, 0) && below(a.hi, a.hi_open, 2 * half_pi);
+      else pos = above(a.lo, a.lo_open, -half_pi) && below(a.hi, a.hi_open, half_pi);
+    }
+    if (pos) return make_range(false, 0, true, false, 1, false);
     return make_range(false, -1, false, false, 1, false);
+  }
+  if (name == "tanh") return make_range(false, -1, false, false, 1, false);
   if (name == "atan") return make_range(false, rat(-15708, 10000), true, false, rat(15708, 10000), true);
   if (name == "asin") return make_range(false, rat(-15708, 10000), false, false, rat(15708, 10000), false);
   if (name == "acos") return make_range(false, 0, false, false, rat(31416, 10000), false);

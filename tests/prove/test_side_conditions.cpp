@@ -108,3 +108,27 @@ TEST_CASE("check_satisfiable", "[side][satisfiable]") {
   W.assume(W["x"], Constraint::Op::Lt, GiNaC::numeric(1, 1000), "x < 1/1000");
   REQUIRE(check_satisfiable(W.t) == "");
 }
+
+TEST_CASE("side conditions: sin on (0, pi) is positive; a constraint times a positive factor fixes a sign",
+          "[prove][side]") {
+  test::Table T;
+  T.add("g", Domain::positive()).add("l", Domain::positive());
+  T.add("theta0", Domain::interval(0, true, GiNaC::Pi / 2, true));
+  T.add("y2", Domain::positive()).add("r2", Domain::positive());
+  T.add("phi", Domain::real());
+  T.assume(T["y2"], Constraint::Op::Gt, T["r2"], "y2 > r2");
+  auto status_of = [&](const GiNaC::ex& e) {
+    auto conds = side_conditions(e, T.t);
+    REQUIRE(conds.size() == 1);
+    return conds[0].status;
+  };
+  // ladder: sqrt(g*l*sin(theta0)) with theta0 in (0, pi/2)
+  CHECK(status_of(GiNaC::sqrt(T["g"] * T["l"] * GiNaC::sin(T["theta0"]))) == SideCondition::Status::Guaranteed);
+  // cos on (0, pi/2) is positive too; sin of a real angle is not
+  CHECK(status_of(GiNaC::log(GiNaC::cos(T["theta0"]))) == SideCondition::Status::Guaranteed);
+  CHECK(status_of(GiNaC::log(GiNaC::sin(T["phi"]))) != SideCondition::Status::Guaranteed);
+  // two-ball bounce: sqrt(2 g (y2 - r2)), written as GiNaC normalises it, with y2 > r2 assumed
+  CHECK(status_of(GiNaC::sqrt(-2 * T["g"] * (T["r2"] - T["y2"]))) == SideCondition::Status::Guaranteed);
+  // the constraint gives no sign to a factor of unknown sign
+  CHECK(status_of(GiNaC::sqrt(T["phi"] * (T["y2"] - T["r2"]))) != SideCondition::Status::Guaranteed);
+}
