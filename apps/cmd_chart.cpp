@@ -29,7 +29,7 @@ struct ChartArgs {
   std::vector<std::string> formulas;
   std::string scenes = "spring,pendulum,rocket,ladder";
   std::string maps = "e_to_1,v1_to_v2,mu_to_0,m2_to_inf,theta_to_0,mr_to_m0";
-  int points = 64, repeats = 5, sweep = 8, steps = 40;
+  int points = 12, repeats = 5, sweep = 8, steps = 40;
   std::string out = "docs/charts", root = ".", csv;
   // evalpoints
   std::vector<std::string> positional;
@@ -59,34 +59,78 @@ void say_written(const std::vector<std::string>& files) {
 }
 
 // --- closed forms --------------------------------------------------------------------------------
+// Every formula of derivations/handout9/*.dc the numeric module evaluates goes into
+// wp_closed.csv and the summary chart wp_closed_all; per-formula figures only for kFigures.
+const std::vector<std::string> kFigures = {"05_direct_impact.dc:v1p_general", "05_direct_impact.dc:energy_loss_general",
+                                           "06_ballistic_pendulum.dc:deflection", "07_two_ball_bounce.dc:v1p_bounce",
+                                           "03_ladder.dc:wall_impulse"};
+
+double clamp_err(double e) { return std::min(std::max(e, 1e-110), 10.0); }
+
 int run_closed(const ChartArgs& a) {
-  std::vector<std::string> specs = a.formulas;
-  if (specs.empty())
-    specs = {a.root + "/derivations/handout9/05_direct_impact.dc:v1p_general",
-             a.root + "/derivations/handout9/05_direct_impact.dc:energy_loss_general",
-             a.root + "/derivations/handout9/06_ballistic_pendulum.dc:deflection",
-             a.root + "/derivations/handout9/07_two_ball_bounce.dc:v1p_bounce",
-             a.root + "/derivations/handout9/03_ladder.dc:wall_impulse"};
-  ClosedOptions o;
-  o.points = a.points, o.repeats = a.repeats;
-  std::vector<WpRow> all;
-  for (const auto& s : specs) {
+  std::vector<std::string> paths;
+  std::set<std::string> only;   // --formula FILE:LABEL restricts to those labels
+  for (const auto& s : a.formulas) {
     const auto colon = s.rfind(':');
     if (colon == std::string::npos) throw std::invalid_argument("--formula expects FILE:LABEL, got '" + s + "'");
-    auto rows = closed_form_wp(s.substr(0, colon), s.substr(colon + 1), o);
-    if (!a.no_figures) {
-      Plot p;
-      p.title = "Work-precision: " + rows.front().formula;
-      p.xlabel = "max relative error vs 100-digit reference (exact: 1e-110)";
-      p.ylabel = "time per evaluation [s]";
-      for (const auto& r : rows)
-        p.series.push_back({r.method, {{std::max(r.rel_err_max, 1e-110), r.seconds.median, r.seconds.min, r.seconds.max}}, true, false});
-      say_written(write_figures(p, a.out + "/wp_closed_" + slug(s.substr(colon + 1))));
+    if (std::find(paths.begin(), paths.end(), s.substr(0, colon)) == paths.end()) paths.push_back(s.substr(0, colon));
+    only.insert(s.substr(0, colon).substr(s.substr(0, colon).find_last_of('/') + 1) + ":" + s.substr(colon + 1));
+  }
+  if (paths.empty())
+    for (const char* f : {"01_momentum_particle", "02_cannon", "03_ladder", "04_system_of_particles", "05_direct_impact",
+                          "06_ballistic_pendulum", "07_two_ball_bounce", "08_oblique_impact", "09_rocket", "10_falling_chain"})
+      paths.push_back(a.root + "/derivations/handout9/" + f + ".dc");
+  ClosedAllOptions o;
+  o.points = a.points, o.repeats = a.repeats;
+  auto res = closed_forms_wp_all(paths, o);
+  if (!only.empty())
+    res.rows.erase(std::remove_if(res.rows.begin(), res.rows.end(), [&](const WpRow& r) { return !only.count(r.formula); }),
+                   res.rows.end());
+  for (const auto& s : res.skipped) std::cerr << "chart closed: skipped " << s << "\n";
+  if (res.rows.empty()) throw std::invalid_argument("chart closed: no formula evaluated");
+  if (!a.no_figures) {
+    // per-formula figures: the five (or the --formula ones)
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<const WpRow*>> by_formula;
+    for (const auto& r : res.rows) {
+      if (!by_formula.count(r.formula)) order.push_back(r.formula);
+      by_formula[r.formula].push_back(&r);
     }
-    all.insert(all.end(), rows.begin(), rows.end());
+    for (const auto& fname : order) {
+      const std::string label = fname.substr(fname.find(':') + 1);
+      if (only.empty() && std::find(kFigures.begin(), kFigures.end(), fname) == kFigures.end()) continue;
+      Plot p;
+      p.title = "Work-precision: " + fname;
+      p.xlabel = "max relative error vs 110-digit reference [1] (exact: 1e-110)";
+      p.ylabel = "time per evaluation [s]";
+      for (const WpRow* r : by_formula[fname])
+        p.series.push_back({r->method, {{clamp_err(r->rel_err_max), r->seconds.median, r->seconds.min, r->seconds.max}}, true, false});
+      say_written(write_figures(p, a.out + "/wp_closed_" + slug(label)));
+    }
+    // summary: one point per formula per method family
+    std::vector<std::string> fam_order;
+    std::map<std::string, PlotSeries> fam;
+    std::map<std::string, int> fam_n;
+    for (const auto& r : res.rows) {
+      const std::string m = method_family(r.method);
+      if (!fam.count(m)) fam_order.push_back(m);
+      fam[m].points.push_back({clamp_err(r.rel_err_max), r.seconds.median, 0, 0});
+      ++fam_n[m];
+    }
+    Plot p;
+    p.title = "Work-precision of " + std::to_string(order.size()) + " handout formulas: one point per formula and method";
+    p.xlabel = "max relative error over domain and stress points vs 110-digit reference [1] (exact: 1e-110, garbage: 10)";
+    p.ylabel = "median time per evaluation [s]";
+    for (const auto& m : fam_order) {
+      PlotSeries s = fam[m];
+      s.name = m + " (" + std::to_string(fam_n[m]) + ")";
+      s.lines = false;
+      p.series.push_back(s);
+    }
+    if (only.empty()) say_written(write_figures(p, a.out + "/wp_closed_all"));
   }
   const std::string csv = a.csv.empty() ? a.out + "/wp_closed.csv" : a.csv;
-  dc::write_file_atomic(csv, to_table(all).to_csv());
+  dc::write_file_atomic(csv, to_table(res.rows).to_csv());
   say_written({csv});
   return 0;
 }
@@ -340,10 +384,10 @@ const dc::cli::CommandRegistrar reg(
           ->required()
           ->check(CLI::IsMember({"closed", "scenes", "maps", "checker", "all", "evalpoints"}));
       sub.add_option("args", a->positional, "evalpoints: FILE LABEL");
-      sub.add_option("--formula", a->formulas, "closed: FILE:LABEL (repeatable; default: five handout formulas)");
+      sub.add_option("--formula", a->formulas, "closed: FILE:LABEL (repeatable; default: every formula of derivations/handout9)");
       sub.add_option("--scenes", a->scenes, "scenes: comma-separated scene names")->capture_default_str();
       sub.add_option("--maps", a->maps, "maps: comma-separated map names")->capture_default_str();
-      sub.add_option("--points", a->points, "closed: random points per formula")->capture_default_str()->check(CLI::PositiveNumber);
+      sub.add_option("--points", a->points, "closed: random points per formula (stress points come on top)")->capture_default_str()->check(CLI::PositiveNumber);
       sub.add_option("--repeats", a->repeats, "timing repeats (median, min, max)")->capture_default_str()->check(CLI::PositiveNumber);
       sub.add_option("--sweep", a->sweep, "scenes: steps/tolerances per integrator")->capture_default_str()->check(CLI::PositiveNumber);
       sub.add_option("--steps", a->steps, "maps: points along the stress axis")->capture_default_str()->check(CLI::Range(2, 100000));

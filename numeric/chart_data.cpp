@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -17,8 +18,10 @@
 #include "derivations/core/derivation.hpp"
 #include "derivations/core/functions.hpp"
 #include "derivations/core/prove.hpp"
+#include "numeric/crosscheck.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/exact.hpp"
+#include "numeric/formula_evaluator.hpp"
 #include "numeric/reference.hpp"
 #include "numeric/scenes/closed_forms.hpp"
 #include "numeric/scenes/scenes.hpp"
@@ -432,11 +435,175 @@ std::vector<WpRow> closed_form_wp(const std::string& path, const std::string& la
 
 Table to_table(const std::vector<WpRow>& rows) {
   Table t{{"formula", "method", "seconds_median", "seconds_min", "seconds_max", "rel_error_median", "rel_error_max",
-           "bits_lost_max", "points"}, {}};
+           "bits_lost_max", "ulps_max", "rel_error_max_random", "points"}, {}};
   for (const auto& r : rows)
     t.rows.push_back({r.formula, r.method, fmt(r.seconds.median), fmt(r.seconds.min), fmt(r.seconds.max),
-                      fmt(r.rel_err_median), fmt(r.rel_err_max), fmt(r.bits_lost_max), std::to_string(r.points)});
+                      fmt(r.rel_err_median), fmt(r.rel_err_max), fmt(r.bits_lost_max),
+                      r.ulps_max < 0 ? std::string() : fmt(r.ulps_max),
+                      r.rel_err_max_random < 0 ? std::string() : fmt(r.rel_err_max_random), std::to_string(r.points)});
   return t;
+}
+
+std::string method_family(const std::string& method) {
+  if (method.rfind("stable form", 0) == 0) return "stable form";
+  return method;
+}
+
+ClosedAllResult closed_forms_wp_all(const std::vector<std::string>& paths, const ClosedAllOptions& opt) {
+  if (opt.points <= 0 || opt.repeats <= 0 || opt.batch == 0)
+    throw std::invalid_argument("chart closed: points, repeats and batch must be positive");
+  ClosedAllResult res;
+  for (const auto& path : paths) {
+    const Derivation d = load_derivation(path);
+    const std::string base = path.substr(path.find_last_of('/') + 1);
+    for (const Formula& f : formulas(d)) {
+      const std::string fname = base + ":" + f.label;
+      std::optional<num::Program> prog;
+      try {
+        prog = num::compile(f.expr, f.params);
+      } catch (const std::invalid_argument& e) {
+        res.skipped.push_back(fname + ": " + e.what());
+        continue;
+      }
+      progress("chart closed " + fname);
+      num::CrossCheckOptions co;
+      co.seed = opt.seed, co.points = opt.points, co.stress = opt.stress, co.digits = opt.ref_digits;
+      const auto pts = num::crosscheck_points(d, f, co);
+      if (pts.empty()) {
+        res.skipped.push_back(fname + ": no valid point in the declared domain");
+        continue;
+      }
+      const std::size_t k = f.params.size(), np = pts.size();
+      const std::size_t n = std::max(opt.batch, np);
+      std::vector<std::vector<double>> cols(k, std::vector<double>(n));
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < k; ++j) cols[j][i] = pts[i % np].x[j];
+      std::vector<const double*> cp;
+      for (const auto& c : cols) cp.push_back(c.data());
+      std::vector<double> out(n);
+      const int npts = static_cast<int>(np);
+      auto max_random = [&](const std::vector<double>& errs) {
+        double m = 0;
+        for (std::size_t i = 0; i < np; ++i)
+          if (pts[i].kind == "random") m = std::max(m, errs[i]);
+        return m;
+      };
+
+      auto add_double = [&](const std::string& method, const std::function<double(const std::vector<double>&)>& one,
+                            const std::function<void()>& batch) {
+        WpRow r{fname, method, time_per_op(batch, static_cast<long>(n), opt.repeats), 0, 0, 0, npts, 0};
+        std::vector<double> errs;
+        double max_ulps = 0;
+        for (const auto& p : pts) {
+          const double y = one(p.x);
+          errs.push_back(rel_error(y, p.ref));
+          const double u = num::error_in_ulps(y, p.ref);
+          max_ulps = std::max(max_ulps, std::isnan(u) ? HUGE_VAL : u);
+        }
+        const Stat s = stat_of(errs);
+        r.rel_err_median = s.median, r.rel_err_max = s.max, r.bits_lost_max = bits_from_ulps(max_ulps);
+        r.ulps_max = max_ulps;
+        r.rel_err_max_random = max_random(errs);
+        res.rows.push_back(r);
+      };
+
+      // CLN at d digits: inputs rounded to d digits, arithmetic in CLN floats of that precision
+      const PlainFormula pf = plain_formula(d, f.expr);
+      const std::vector<std::size_t> idx = map_params(pf.inputs, f.params, fname);
+      for (int digits : opt.cln_digits) {
+        std::vector<numeric> vals(np);
+        std::vector<char> ok(np, 0);
+        auto run = [&] {
+          DigitsGuard g(digits);
+          for (std::size_t i = 0; i < np; ++i) {
+            GiNaC::exmap m;
+            for (std::size_t j = 0; j < pf.inputs.size(); ++j)
+              m[pf.inputs[j]] = num::exact_rational(pts[i].x[idx[j]]).evalf();
+            ok[i] = false;
+            try {
+              const ex v = pf.expr.subs(m).evalf();
+              if (GiNaC::is_a<numeric>(v) && GiNaC::ex_to<numeric>(v).is_real()) {
+                vals[i] = GiNaC::ex_to<numeric>(v);
+                ok[i] = true;
+              }
+            } catch (const std::exception&) {
+              // e.g. log(0) after rounding the inputs to `digits`: counted as a failure
+            }
+          }
+        };
+        WpRow r{fname, "CLN " + std::to_string(digits) + " digits",
+                time_per_op(run, static_cast<long>(np), opt.repeats), 0, 0, 0, npts, -1};
+        std::vector<double> errs;
+        for (std::size_t i = 0; i < np; ++i) errs.push_back(ok[i] ? rel_error_exact(vals[i], pts[i].ref) : HUGE_VAL);
+        const Stat s = stat_of(errs);
+        r.rel_err_median = s.median, r.rel_err_max = s.max;
+        r.bits_lost_max = std::log2(1 + s.max / std::pow(10.0, -digits));
+        r.rel_err_max_random = max_random(errs);
+        res.rows.push_back(r);
+      }
+      // the evaluator in double and long double
+      const num::Evaluator<double> ev(*prog);
+      add_double("double (evaluator)", [&](const std::vector<double>& x) { return ev(x); },
+                 [&] { ev.eval_batch(cp.data(), out.data(), n); });
+      {
+        const num::Evaluator<long double> evl(*prog);
+        std::vector<std::vector<long double>> lcols(k, std::vector<long double>(n));
+        for (std::size_t j = 0; j < k; ++j)
+          for (std::size_t i = 0; i < n; ++i) lcols[j][i] = cols[j][i];
+        std::vector<const long double*> lcp;
+        for (auto& c : lcols) lcp.push_back(c.data());
+        std::vector<long double> lout(n);
+        WpRow r{fname, "long double (evaluator)",
+                time_per_op([&] { evl.eval_batch(lcp.data(), lout.data(), n); }, static_cast<long>(n), opt.repeats),
+                0, 0, 0, npts, 0};
+        std::vector<double> errs;
+        double max_ulps = 0;
+        for (const auto& p : pts) {
+          const std::vector<long double> a(p.x.begin(), p.x.end());
+          const long double y = evl(a);
+          errs.push_back(rel_error(y, p.ref));
+          const double u = num::error_in_ulps(y, p.ref);
+          max_ulps = std::max(max_ulps, std::isnan(u) ? HUGE_VAL : u);
+        }
+        const Stat s = stat_of(errs);
+        r.rel_err_median = s.median, r.rel_err_max = s.max;
+        r.bits_lost_max = std::min(64.0, std::log2(1 + s.max / std::ldexp(1.0, -64)));
+        r.ulps_max = max_ulps;
+        r.rel_err_max_random = max_random(errs);
+        res.rows.push_back(r);
+      }
+      // FormulaEvaluator: compensated (double-double) and the file's stable form in double
+      Eigen::ArrayXXd in(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
+      for (std::size_t j = 0; j < k; ++j)
+        for (std::size_t i = 0; i < n; ++i) in(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = cols[j][i];
+      Eigen::ArrayXd eout(static_cast<Eigen::Index>(n));
+      try {
+        const num::FormulaEvaluator fc(d, f.label, num::EvalMode::Compensated);
+        add_double("compensated (double-double)", [&](const std::vector<double>& x) { return fc(x); },
+                   [&] { fc.eval_batch(in, eout); });
+        const num::FormulaEvaluator fs(d, f.label, num::EvalMode::Fast);
+        if (fs.has_stable())
+          add_double("stable form " + fs.stable_label(), [&](const std::vector<double>& x) { return fs(x); },
+                     [&] { fs.eval_batch(in, eout); });
+      } catch (const std::exception& e) {
+        res.skipped.push_back(fname + ": compensated/stable not evaluated: " + e.what());
+      }
+      // hand-written C++ (the speed limit) where one is known
+      std::vector<std::string> names;
+      for (const auto& s : f.params) names.push_back(s.get_name());
+      std::function<double(const double*)> hw;
+      try {
+        hw = hand_written(f.label, names);
+      } catch (const std::invalid_argument&) {
+        // same label, other parameters (another file's formula): no hand-written version
+      }
+      if (hw)
+        add_double("hand-written C++", [&](const std::vector<double>& x) { return hw(x.data()); },
+                   [&] { hand_written_batch(f.label, names, cp.data(), out.data(), n); });
+    }
+  }
+  progress("");
+  return res;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -65,6 +65,8 @@ struct WpRow {
   double rel_err_median = 0, rel_err_max = 0;   // against the reference (0 when exact)
   double bits_lost_max = 0;  // log2(1 + max error in ulps of the method's own precision)
   int points = 0;
+  double ulps_max = -1;      // max error in ulps of double at the reference (-1: CLN rows)
+  double rel_err_max_random = -1;   // max over the random points only (-1: not recorded)
 };
 // `path` a .dc file, `label` a formula step (y = expr). Methods: CLN at each of cln_digits
 // (inputs rounded to that precision, arithmetic in CLN floats), the fast evaluator in double
@@ -74,6 +76,32 @@ struct WpRow {
 std::vector<WpRow> closed_form_wp(const std::string& path, const std::string& label,
                                   const ClosedOptions& opt);
 Table to_table(const std::vector<WpRow>& rows);
+
+// Work-precision of EVERY formula of the given .dc files that the numeric module can compile
+// (formulas with abstract functions or derivatives are skipped and listed). Points are those of
+// `derivcheck crosscheck` (num::crosscheck_points: seeded random points in the declared
+// domains plus stress points), references at ref_digits. Methods: CLN at each of cln_digits,
+// "double (evaluator)", "long double (evaluator)", "compensated (double-double)"
+// (FormulaEvaluator EvalMode::Compensated: the stable form in its regime, in double-double),
+// "stable form LABEL" (FormulaEvaluator EvalMode::Fast) where the file has one, and
+// "hand-written C++" where hand_written() knows the label. Fast methods are timed over
+// `batch` evaluations (the points tiled), CLN over the points.
+struct ClosedAllOptions {
+  int points = 12;           // random points per formula (stress points come on top)
+  bool stress = true;
+  int repeats = 3;
+  std::vector<int> cln_digits = {15, 30, 50, 100};
+  int ref_digits = 110;
+  std::uint64_t seed = 20261121;
+  std::size_t batch = 4096;
+};
+struct ClosedAllResult {
+  std::vector<WpRow> rows;
+  std::vector<std::string> skipped;   // "file:label: reason"
+};
+ClosedAllResult closed_forms_wp_all(const std::vector<std::string>& paths, const ClosedAllOptions& opt);
+// The method family a row belongs to in the summary chart ("stable form LABEL" -> "stable form").
+std::string method_family(const std::string& method);
 
 // Hand-written double versions of handout formulas (the speed limit). Returns an empty
 // function if none is known for the label. Arguments in the order of `params` (names); throws

@@ -306,6 +306,33 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
   return reports;
 }
 
+std::vector<SamplePoint> crosscheck_points(const Derivation& d, const Formula& f, const CrossCheckOptions& opt) {
+  Checker ck(d, f, opt, mix(opt.seed, d.source.name + ":" + f.label));
+  std::vector<SamplePoint> out;
+  auto take = [&](const Candidate& c) -> bool {
+    auto p = ck.exact_point(c.x);
+    if (!p) return false;
+    auto ref = ck.reference(*p);
+    if (!ref) return false;
+    out.push_back({c.x, c.kind, *ref});
+    return true;
+  };
+  std::optional<std::vector<double>> base;
+  int accepted = 0, tries = 0;
+  while (accepted < opt.points && tries < 50 * opt.points + 100) {
+    ++tries;
+    Candidate c{{}, "random"};
+    for (const SymbolInfo* s : ck.infos()) c.x.push_back(ck.draw(*s));
+    if (take(c)) {
+      ++accepted;
+      if (!base) base = c.x;
+    }
+  }
+  if (opt.stress && base)
+    for (const Candidate& c : ck.stress_candidates(*base)) take(c);
+  return out;
+}
+
 const MethodStats* best_method(const FormulaReport& r) {
   const MethodStats* best = nullptr;
   for (const MethodStats& m : r.methods) {

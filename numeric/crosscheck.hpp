@@ -55,6 +55,16 @@ struct FormulaReport {
 
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt);
 
+// The points crosscheck() evaluates one formula at (same seed, domains, constraints and stress
+// points), each with its CLN reference at opt.digits. x in the order of f.params; kind is
+// "random" or the stress description. Used by the closed-form work-precision charts.
+struct SamplePoint {
+  std::vector<double> x;
+  std::string kind;
+  GiNaC::numeric ref;
+};
+std::vector<SamplePoint> crosscheck_points(const Derivation& d, const Formula& f, const CrossCheckOptions& opt);
+
 // The method with the smallest max error among those that return a double ("double", "stable",
 // "compensated"; "long double" is not a double result). nullptr if none was evaluated.
 const MethodStats* best_method(const FormulaReport& r);
