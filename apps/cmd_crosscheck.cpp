@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "apps/commands.hpp"
+#include "derivations/core/io.hpp"
 #include "derivations/core/derivation.hpp"
 #include "numeric/crosscheck.hpp"
 
@@ -21,23 +22,6 @@ struct CrossOptions {
   double fail_above = -1;
 };
 
-std::vector<std::string> expand_inputs(const std::vector<std::string>& inputs) {
-  std::vector<std::string> out;
-  for (const auto& in : inputs) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(in, ec)) {
-      std::vector<std::string> files;
-      for (const auto& entry : std::filesystem::directory_iterator(in, ec))
-        if (entry.is_regular_file() && entry.path().extension() == ".dc") files.push_back(entry.path().string());
-      std::sort(files.begin(), files.end());
-      out.insert(out.end(), files.begin(), files.end());
-    } else {
-      out.push_back(in);
-    }
-  }
-  return out;
-}
-
 int run(CrossOptions& o) {
   if (o.opt.points < 1 || o.opt.points > 1000000)
     throw std::domain_error("--points " + std::to_string(o.opt.points) + " is outside [1, 1000000]");
@@ -45,7 +29,7 @@ int run(CrossOptions& o) {
     throw std::domain_error("--digits " + std::to_string(o.opt.digits) + " is outside [20, 1000]");
   o.opt.stress = !o.no_stress;
   std::vector<num::FormulaReport> all;
-  for (const auto& f : expand_inputs(o.inputs)) {
+  for (const auto& f : dc::derivation_files(o.inputs)) {
     const Derivation d = load_derivation(f);
     auto r = num::crosscheck(d, o.opt);
     all.insert(all.end(), r.begin(), r.end());

@@ -197,6 +197,35 @@ std::uint64_t mix(std::uint64_t seed, const std::string& s) {
 
 }  // namespace
 
+namespace {
+
+// The seeded random points (opt.points accepted, from the declared domains) and then the stress
+// points around the first accepted one, each offered to `use`, which returns false to reject
+// it. Returns how many were rejected. One sampler for crosscheck() and crosscheck_points(), so
+// both see the same points.
+template <class Use>
+int sample_points(Checker& ck, const CrossCheckOptions& opt, Use&& use) {
+  std::optional<std::vector<double>> base;
+  int accepted = 0, tries = 0, rejected = 0;
+  while (accepted < opt.points && tries < 50 * opt.points + 100) {
+    ++tries;
+    Candidate c{{}, "random"};
+    for (const SymbolInfo* s : ck.infos()) c.x.push_back(ck.draw(*s));
+    if (use(c)) {
+      ++accepted;
+      if (!base) base = c.x;
+    } else {
+      ++rejected;
+    }
+  }
+  if (opt.stress && base)
+    for (const Candidate& c : ck.stress_candidates(*base))
+      if (!use(c)) ++rejected;
+  return rejected;
+}
+
+}  // namespace
+
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt) {
   std::vector<FormulaReport> reports;
   for (const Formula& f : formulas(d)) {
@@ -259,22 +288,7 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
       }
       return true;
     };
-    std::optional<std::vector<double>> base;
-    int accepted = 0, tries = 0;
-    while (accepted < opt.points && tries < 50 * opt.points + 100) {
-      ++tries;
-      Candidate c{{}, "random"};
-      for (const SymbolInfo* s : ck.infos()) c.x.push_back(ck.draw(*s));
-      if (run(c)) {
-        ++accepted;
-        if (!base) base = c.x;
-      } else {
-        ++rep.rejected;
-      }
-    }
-    if (opt.stress && base)
-      for (const Candidate& c : ck.stress_candidates(*base))
-        if (!run(c)) ++rep.rejected;
+    rep.rejected += sample_points(ck, opt, run);
     auto stats = [&](const char* name, Acc& a) {
       MethodStats m;
       m.method = name;
@@ -317,19 +331,7 @@ std::vector<SamplePoint> crosscheck_points(const Derivation& d, const Formula& f
     out.push_back({c.x, c.kind, *ref});
     return true;
   };
-  std::optional<std::vector<double>> base;
-  int accepted = 0, tries = 0;
-  while (accepted < opt.points && tries < 50 * opt.points + 100) {
-    ++tries;
-    Candidate c{{}, "random"};
-    for (const SymbolInfo* s : ck.infos()) c.x.push_back(ck.draw(*s));
-    if (take(c)) {
-      ++accepted;
-      if (!base) base = c.x;
-    }
-  }
-  if (opt.stress && base)
-    for (const Candidate& c : ck.stress_candidates(*base)) take(c);
+  sample_points(ck, opt, take);
   return out;
 }
 
