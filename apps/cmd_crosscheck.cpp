@@ -45,7 +45,7 @@ int run(CrossOptions& o) {
 
 const CommandRegistrar registrar(
     "crosscheck",
-    "evaluate every formula fast (double, long double, stable form) against the CLN reference",
+    "evaluate every formula (double, long double, stable form, compensated) against the CLN reference",
     [](CLI::App& sub) -> std::function<int()> {
       auto o = std::make_shared<CrossOptions>();
       sub.add_option("inputs", o->inputs, "derivation files or directories")->required();

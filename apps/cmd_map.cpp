@@ -60,7 +60,7 @@ std::string md_escape(std::string s) {
 }  // namespace
 
 static dc::cli::CommandRegistrar reg_map(
-    "map", "Write the handout map: equation -> file:line -> verdict -> tests (Markdown)",
+    "map", "write the handout map: equation -> file:line -> verdict -> tests (Markdown)",
     [](CLI::App& sub) {
       auto inputs = std::make_shared<std::vector<std::string>>();
       auto tests = std::make_shared<std::string>();
