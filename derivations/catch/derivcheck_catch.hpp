@@ -102,6 +102,15 @@ struct Outcome {
   std::string error;   // input error (malformed assumption, expression)
 };
 
+// Both sides printed deterministically, then the verdict of prove_equal: the one decision the
+// matchers share.
+inline bool decide(const GiNaC::ex& a, const GiNaC::ex& b, const SymbolTable& table, Outcome& out) {
+  out.lhs_text = print_text(a, table);
+  out.rhs_text = print_text(b, table);
+  out.verdict = prove_equal(a, b, table);
+  return out.verdict.holds();
+}
+
 }  // namespace detail
 
 // lhs (GiNaC::ex) == rhs, decided by prove_equal under the assumptions.
@@ -129,11 +138,7 @@ class EqualsSymbolicallyEx : public Catch::MatcherBase<GiNaC::ex> {
       GiNaC::exmap to_table;
       for (const auto& [name, s] : syms)
         if (const SymbolInfo* info = table.find(name)) to_table[s] = info->sym;
-      GiNaC::ex a = lhs.subs(to_table), b = rhs_.subs(to_table);
-      out_->lhs_text = print_text(a, table);
-      out_->rhs_text = print_text(b, table);
-      out_->verdict = prove_equal(a, b, table);
-      return out_->verdict.holds();
+      return detail::decide(lhs.subs(to_table), rhs_.subs(to_table), table, *out_);
     } catch (const InputError& e) {
       out_->error = e.format();
     } catch (const std::exception& e) {
@@ -176,11 +181,7 @@ class EqualsSymbolicallyText : public Catch::MatcherBase<std::string> {
       Node l = parse_expression(lhs, SourcePos{"<lhs>", 1, 1});
       Node r = parse_expression(rhs_, SourcePos{"<rhs>", 1, 1});
       SymbolTable table = detail::table_for({&l, &r}, assume_);
-      GiNaC::ex a = to_ginac(l, table), b = to_ginac(r, table);
-      out_->lhs_text = print_text(a, table);
-      out_->rhs_text = print_text(b, table);
-      out_->verdict = prove_equal(a, b, table);
-      return out_->verdict.holds();
+      return detail::decide(to_ginac(l, table), to_ginac(r, table), table, *out_);
     } catch (const InputError& e) {
       out_->error = e.format();
     } catch (const std::exception& e) {

@@ -11,19 +11,13 @@
 #include "numeric/exact.hpp"
 #include "numeric/formula_evaluator.hpp"
 #include "numeric/reference.hpp"
+#include "handout.hpp"
 
 using namespace dc::num;
 
 namespace {
 
-const std::string kDir = std::string(DERIVCHECK_SOURCE_DIR) + "/derivations/handout9/";
-
-const dc::Derivation& handout(const std::string& file) {
-  static std::map<std::string, dc::Derivation> cache;
-  auto it = cache.find(file);
-  if (it == cache.end()) it = cache.emplace(file, dc::load_derivation(kDir + file)).first;
-  return it->second;
-}
+using dc::test::handout;
 
 struct Errors {
   double naive_ulps, stable_ulps;
