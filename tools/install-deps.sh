@@ -3,7 +3,7 @@
 # from Debian 12 packages only. Idempotent; needs root (or sudo) and apt.
 set -euo pipefail
 pkgs=(g++ cmake make pkg-config
-      libginac-dev libcln-dev libeigen3-dev catch2 libboost-dev libbenchmark-dev
+      libginac-dev libcln-dev libflint-arb-dev libeigen3-dev catch2 libboost-dev libbenchmark-dev
       nlohmann-json3-dev libcli11-dev gnuplot-nox
       texlive-latex-base texlive-latex-recommended texlive-pictures poppler-utils)
 missing=()

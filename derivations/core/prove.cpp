@@ -8,6 +8,7 @@
 
 #include "derivations/core/printer.hpp"
 #include "derivations/core/prove_detail.hpp"
+#include "derivations/kernel/ball.hpp"
 
 namespace dc {
 
@@ -255,123 +256,12 @@ void collect_conditions(const ex& e, std::vector<RawCond>& out) {
 }
 
 // ------------------------------------------------------------------ stage 4: numeric probe
-
-numeric pow10(long k) { return GiNaC::pow(numeric(10), numeric(k)); }
-
-struct PointOutcome {
-  enum Kind { Agree, Disagree, Reject } kind = Reject;
-  numeric a, b;
-  numeric rel;         // relative difference (for reports)
-  long digits = 0;     // precision of the deciding evaluation
-  std::string why;     // for Reject
-};
-
-// Compare the two sides (already substituted) at the working precision D; a difference that
-// is not within tolerance is re-evaluated at 2D (and 4D): a genuine difference stays put as
-// precision rises, rounding noise shrinks by ~10^-D. Only a stable difference refutes.
-PointOutcome compare_sides(const ex& l, const ex& r, long D, const numeric& tol) {
-  PointOutcome out;
-  auto eval2 = [&](long digits, numeric& a, numeric& b, bool& exact) -> bool {
-    d::RealValue va = d::eval_real(l, digits);
-    if (!va.ok) {
-      out.why = va.why;
-      return false;
-    }
-    d::RealValue vb = d::eval_real(r, digits);
-    if (!vb.ok) {
-      out.why = vb.why;
-      return false;
-    }
-    a = va.value;
-    b = vb.value;
-    exact = va.exact && vb.exact;
-    return true;
-  };
-  auto rel_of = [](const numeric& a, const numeric& b, numeric& diff) {
-    diff = GiNaC::abs(a - b);
-    numeric scale = std::max(GiNaC::abs(a), GiNaC::abs(b));
-    if (scale.is_zero()) return numeric(0);
-    return diff / scale;
-  };
-  numeric a, b, diff;
-  bool exact = false;
-  if (!eval2(D, a, b, exact)) return out;
-  out.a = a;
-  out.b = b;
-  out.digits = D;
-  if (exact) {  // both sides exact rationals: decided exactly
-    numeric dd;
-    out.rel = rel_of(a, b, dd);
-    out.kind = (a == b) ? PointOutcome::Agree : PointOutcome::Disagree;
-    return out;
-  }
-  numeric rel = rel_of(a, b, diff);
-  out.rel = rel;
-  if (rel <= tol) {
-    out.kind = PointOutcome::Agree;
-    return out;
-  }
-  numeric a2, b2, diff2;
-  if (!eval2(2 * D, a2, b2, exact)) {
-    out.why = "unstable evaluation: " + out.why;
-    return out;
-  }
-  numeric rel2 = rel_of(a2, b2, diff2);
-  out.a = a2;
-  out.b = b2;
-  out.digits = 2 * D;
-  out.rel = rel2;
-  if (rel2 <= tol) {
-    out.kind = PointOutcome::Agree;
-    return out;
-  }
-  if (diff2 >= diff / 2 && diff2 <= diff * 2) {
-    out.kind = PointOutcome::Disagree;
-    return out;
-  }
-  if (diff2 <= diff * pow10(-D / 2)) {
-    // looks like rounding noise around an exact zero difference: one more doubling
-    numeric a4, b4, diff4;
-    if (!eval2(4 * D, a4, b4, exact)) {
-      out.why = "unstable evaluation: " + out.why;
-      return out;
-    }
-    numeric rel4 = rel_of(a4, b4, diff4);
-    if (diff4 <= diff2 * pow10(-D) || rel4 <= tol) {
-      out.kind = PointOutcome::Agree;
-      numeric scale = std::max(GiNaC::abs(a), GiNaC::abs(b));
-      out.rel = scale.is_zero() ? numeric(0) : diff4 / scale;
-      out.digits = 4 * D;
-      return out;
-    }
-    if (diff4 >= diff2 / 2 && diff4 <= diff2 * 2) {
-      out.a = a4;
-      out.b = b4;
-      out.rel = rel4;
-      out.digits = 4 * D;
-      out.kind = PointOutcome::Disagree;
-      return out;
-    }
-  }
-  out.why = "unstable evaluation (the difference changes erratically with precision)";
-  return out;
-}
-
-double to_double_safe(const numeric& x) {
-  if (x.is_zero()) return 0;
-  if (x < numeric(1, 1) * pow10(-300)) return 1e-300;
-  return x.to_double();
-}
-
-// Both sides' values with 20 significant digits, or more when 20 cannot show the difference
-// (exp(pi*sqrt(163)) and 640320^3 + 744 agree to 30 digits).
-void set_values(Verdict& v, const numeric& a, const numeric& b) {
-  for (int sig = 20; sig <= 120; sig += 5) {
-    v.lhs_value = d::format_number(a, sig);
-    v.rhs_value = d::format_number(b, sig);
-    if (v.lhs_value != v.rhs_value || a == b) break;
-  }
-}
+//
+// Every comparison goes through the kernel (derivations/kernel/ball.hpp): both sides are
+// enclosed in Arb balls at the sample point, precision raised until the balls decide.
+//   Differ / one side real and the other certified not real  -> a certified counterexample
+//   Agree (difference bounded below the tolerance, rigorously) -> the point supports the claim
+//   neither side real, an exact pole, or undecided at the cap  -> the point is not counted
 
 std::string sci(double x) {
   std::ostringstream os;
@@ -380,177 +270,195 @@ std::string sci(double x) {
   return os.str();
 }
 
+kernel::CompareOptions compare_options(const ProveOptions& opt) {
+  kernel::CompareOptions co;
+  co.start_digits = opt.digits;
+  co.tol_exponent = std::lround(opt.rel_tol_exponent);
+  return co;
+}
+
+bool certified_counterexample(const kernel::PointComparison& c) {
+  using K = kernel::PointComparison::Kind;
+  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
+}
+
+// "lhs = 1.5, rhs = 2.25" / "lhs = 0.4 is real, rhs is not real (log of a negative number)"
+std::string difference_text(const kernel::PointComparison& c) {
+  using K = kernel::PointComparison::Kind;
+  if (c.kind == K::LhsOnly) return "lhs = " + c.lhs_text + " is real, rhs is " + c.rhs_text;
+  if (c.kind == K::RhsOnly) return "rhs = " + c.rhs_text + " is real, lhs is " + c.lhs_text;
+  return "lhs = " + c.lhs_text + ", rhs = " + c.rhs_text;
+}
+
+void set_refuted(Verdict& v, const kernel::PointComparison& c) {
+  v.kind = VerdictKind::Refuted;
+  v.digits = static_cast<int>(c.digits);
+  v.lhs_value = c.lhs_text;
+  v.rhs_value = c.rhs_text;
+  v.max_rel_diff = c.rel_diff;
+}
+
+// Magnitude tier of the k-th draw: most points in 10^[-2, 2], every sixth point in 10^[-6, 6]
+// and every sixth in 10^[-30, 30], so large and tiny values of the declared domain are tested
+// too (a claim that fails only for x > 10^6 is found).
+int tier_of(int attempt, bool failing) {
+  if (failing) return 1 + attempt % 2;
+  switch (attempt % 6) {
+    case 4: return 1;
+    case 5: return 2;
+    default: return 0;
+  }
+}
+
+bool has_imaginary_number(const ex& e) {
+  if (GiNaC::is_a<numeric>(e)) return !GiNaC::ex_to<numeric>(e).is_real();
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_imaginary_number(e.op(i))) return true;
+  return false;
+}
+
+struct Substituted {
+  bool ok = false;
+  ex l, r;
+};
+
+Substituted substitute_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& p, bool abstract, std::uint64_t fseed) {
+  Substituted s;
+  try {
+    s.l = lhs.subs(p, GiNaC::subs_options::no_pattern);
+    s.r = rhs.subs(p, GiNaC::subs_options::no_pattern);
+    if (abstract) {
+      s.l = d::replace_abstract(s.l, fseed);
+      s.r = d::replace_abstract(s.r, fseed);
+    }
+    s.ok = true;
+  } catch (const std::exception&) {
+    // an exact division by zero while substituting: an isolated point, not a counterexample
+  }
+  return s;
+}
+
 Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
               const std::string& residual) {
+  using K = kernel::PointComparison::Kind;
   Verdict v;
   v.method = "numeric probe";
   v.residual = residual;
-  long tol_exp = std::lround(opt.rel_tol_exponent);
-  numeric tol = pow10(tol_exp);
-  // The working precision must resolve the tolerance with room for rounding.
-  long D = std::max<long>(opt.digits, -tol_exp + 15);
-  v.digits = static_cast<int>(D);
+  const kernel::CompareOptions co = compare_options(opt);
+  const long tol_exp = co.tol_exponent;
+  v.digits = static_cast<int>(std::max<long>(opt.digits, -tol_exp + 15));
 
+  if (has_imaginary_number(lhs) || has_imaginary_number(rhs)) {
+    // The probe decides claims about real quantities (a non-real intermediate means "not
+    // defined here"); a claim written with I is complex-valued by intent.
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the claim contains the imaginary unit: the numeric probe decides real-valued claims only";
+    v.detail = v.reason;
+    return v;
+  }
   d::PointSampler sampler({lhs, rhs}, ctx);
   bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
   std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
 
   if (sampler.symbols().empty() && !abstract) {
-    // A constant claim: one evaluation at D digits, confirmed at 2D.
-    PointOutcome o = compare_sides(lhs, rhs, D, tol);
-    if (o.kind == PointOutcome::Reject) {
-      v.kind = VerdictKind::Undecided;
-      v.reason = "the constant claim cannot be evaluated: " + o.why;
-      v.detail = v.reason;
+    kernel::PointComparison c = kernel::compare_constants(lhs, rhs, co);
+    if (certified_counterexample(c)) {
+      set_refuted(v, c);
+      v.detail = "the constants differ: " + difference_text(c) + " (certified by ball arithmetic at " +
+                 std::to_string(c.digits) + " digits)";
       return v;
     }
-    set_values(v, o.a, o.b);
-    v.max_rel_diff = to_double_safe(o.rel);
-    if (o.kind == PointOutcome::Disagree) {
-      v.kind = VerdictKind::Refuted;
-      v.digits = static_cast<int>(o.digits);
-      v.detail = "the constants differ: lhs = " + v.lhs_value + ", rhs = " + v.rhs_value +
-                 " (relative difference " + sci(v.max_rel_diff) + " at " + std::to_string(o.digits) +
-                 " digits)";
+    if (c.kind == K::Agree) {
+      v.kind = VerdictKind::HoldsNumerically;
+      v.points = 1;
+      v.digits = static_cast<int>(c.digits);
+      v.lhs_value = c.lhs_text;
+      v.rhs_value = c.rhs_text;
+      v.max_rel_diff = c.rel_diff;
+      v.false_accept = "constant claim: |lhs - rhs| <= " + sci(std::max(c.rel_diff, 1e-300)) +
+                       " relative, a rigorous ball-arithmetic bound at " + std::to_string(c.digits) +
+                       " digits; only a false identity closer than that could pass";
+      v.detail = "constants agree: " + c.lhs_text + " (difference bounded by " + sci(c.rel_diff) +
+                 " relative at " + std::to_string(c.digits) + " digits)";
       return v;
     }
-    // Confirm at 2D so a near-miss below the D-digit tolerance cannot pass unnoticed.
-    PointOutcome o2 = compare_sides(lhs, rhs, 2 * D, tol * pow10(-D));
-    if (o2.kind == PointOutcome::Disagree) {
-      v.kind = VerdictKind::Refuted;
-      v.digits = static_cast<int>(o2.digits);
-      set_values(v, o2.a, o2.b);
-      v.max_rel_diff = to_double_safe(o2.rel);
-      v.detail = "the constants differ: lhs = " + v.lhs_value + ", rhs = " + v.rhs_value +
-                 " (relative difference " + sci(v.max_rel_diff) + " at " + std::to_string(o2.digits) +
-                 " digits)";
-      return v;
-    }
-    v.lhs_value = d::format_number(o.a, 20);
-    v.rhs_value = d::format_number(o.b, 20);
-    v.kind = VerdictKind::HoldsNumerically;
-    v.points = 1;
-    v.digits = static_cast<int>(2 * D);
-    v.false_accept =
-        "constant claim: both sides agree to about " + std::to_string(D) +
-        " significant digits (evaluated at " + std::to_string(D) + " and " + std::to_string(2 * D) +
-        " digits); only a false identity closer than that could pass";
-    v.detail = "constants agree at " + std::to_string(2 * D) + " digits: " + v.lhs_value;
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the constant claim cannot be decided: " + c.why;
+    v.detail = v.reason;
     return v;
   }
-
-  // Real-domain guards: a claim about real quantities is only tested where every log, root,
-  // acos and asin in it is real (a point where acos gets 1.5 can give real values on both
-  // sides through complex intermediates; such points are rejected, not counted).
-  std::vector<RawCond> guards;
-  collect_conditions(lhs, guards);
-  collect_conditions(rhs, guards);
-  guards.erase(std::remove_if(guards.begin(), guards.end(),
-                              [](const RawCond& c) { return c.kind == CondKind::Nonzero; }),
-               guards.end());
-  auto guards_hold = [&](const GiNaC::exmap& p, std::uint64_t fseed) {
-    const numeric slack = pow10(-25);
-    for (const RawCond& g : guards) {
-      ex a;
-      try {
-        a = g.arg.subs(p, GiNaC::subs_options::no_pattern);
-        if (abstract) a = d::replace_abstract(a, fseed);
-      } catch (const std::exception&) {
-        return false;
-      }
-      d::RealValue rv = d::eval_real(a, 40);
-      if (!rv.ok) return false;
-      switch (g.kind) {
-        case CondKind::Positive:
-          if (!rv.value.is_positive()) return false;
-          break;
-        case CondKind::Nonnegative:
-          if (rv.value < -slack) return false;
-          break;
-        case CondKind::UnitInterval:
-          if (GiNaC::abs(rv.value) > 1 + slack) return false;
-          break;
-        case CondKind::Nonzero: break;
-      }
-    }
-    return true;
-  };
 
   d::Rng rng(opt.seed);
   const int need = std::max(1, opt.probe_points);
   const int max_attempts = std::max(100, need * 40);
-  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, nonreal = 0, unstable = 0, outside_real = 0;
-  numeric max_rel = 0;
+  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, neither_real = 0, unknown = 0;
+  std::string unknown_why;
+  double max_rel = 0;
+  long max_digits = 0;
   for (; attempts < max_attempts && agreed < need; ++attempts) {
-    bool wide = attempts >= need * 10;  // widen magnitudes when narrow draws keep failing
+    int tier = tier_of(attempts, attempts >= need * 10);
     bool admissible = false;
-    GiNaC::exmap p = sampler.draw(rng, wide, &admissible);
+    GiNaC::exmap p = sampler.draw(rng, tier, &admissible);
     if (!admissible) {
       ++excluded;
       continue;
     }
-    ex l, r;
     std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
-    try {
-      l = lhs.subs(p, GiNaC::subs_options::no_pattern);
-      r = rhs.subs(p, GiNaC::subs_options::no_pattern);
-      if (abstract) {
-        l = d::replace_abstract(l, fseed);
-        r = d::replace_abstract(r, fseed);
-      }
-    } catch (const std::exception&) {
+    Substituted s = substitute_point(lhs, rhs, p, abstract, fseed);
+    if (!s.ok) {
       ++undefined;
       continue;
     }
-    if (!guards.empty() && !guards_hold(p, fseed)) {
-      ++outside_real;
-      continue;
-    }
-    PointOutcome o = compare_sides(l, r, D, tol);
-    if (o.kind == PointOutcome::Agree) {
+    kernel::PointComparison c = kernel::compare_constants(s.l, s.r, co);
+    if (c.kind == K::Agree) {
       ++agreed;
-      if (o.rel > max_rel) max_rel = o.rel;
+      max_rel = std::max(max_rel, c.rel_diff);
+      max_digits = std::max(max_digits, c.digits);
       continue;
     }
-    if (o.kind == PointOutcome::Reject) {
-      if (o.why.find("unstable") != std::string::npos) ++unstable;
-      else if (o.why.find("not real") != std::string::npos) ++nonreal;
-      else ++undefined;
+    if (c.kind == K::NeitherReal) {
+      ++neither_real;
       continue;
     }
-    v.kind = VerdictKind::Refuted;
+    if (c.kind == K::IsolatedPole) {
+      ++undefined;
+      continue;
+    }
+    if (c.kind == K::Unknown) {
+      ++unknown;
+      if (unknown_why.empty()) unknown_why = c.why;
+      continue;
+    }
+    set_refuted(v, c);
     v.points = agreed;
-    v.digits = static_cast<int>(o.digits);
     v.point = sampler.describe(p);
-    set_values(v, o.a, o.b);
-    v.max_rel_diff = to_double_safe(o.rel);
-    v.detail = "differs at " + (v.point.empty() ? std::string("an abstract-function sample") : d::join_point(v.point)) +
-               ": lhs = " + v.lhs_value + ", rhs = " + v.rhs_value;
+    std::string where = v.point.empty() ? std::string("an abstract-function sample") : d::join_point(v.point);
+    v.detail = "differs at " + where + ": " + difference_text(c) + " (certified by ball arithmetic at " +
+               std::to_string(c.digits) + " digits)";
     if (abstract) v.detail += " (abstract function values drawn at random)";
     return v;
   }
   if (agreed >= need) {
     v.kind = VerdictKind::HoldsNumerically;
     v.points = agreed;
-    v.max_rel_diff = to_double_safe(max_rel);
+    v.max_rel_diff = max_rel;
+    v.digits = static_cast<int>(std::max<long>(v.digits, max_digits));
     // False-accept bound (stated, heuristic for transcendental differences): each symbol is
-    // drawn from roughly 1e9 distinct rationals (random denominator ~1e5, magnitude spread over
-    // 4 decades). A nonzero polynomial/rational difference of degree <= 1000 vanishes on at most
-    // 1000 values per line through the sample box (Schwartz-Zippel), i.e. on < 1e-6 of the
-    // draws; an analytic difference that is not identically zero behaves the same way away from
-    // its (measure-zero) zero set, and agreeing to 1e-30 relative instead of exactly only widens
-    // that set by ~1e-30. Independent points multiply: < 1e-(6k). Not covered: claims whose
-    // difference is below the tolerance everywhere, or built to vanish on this sample grid.
+    // drawn from roughly 1e9 distinct rationals (random denominator ~1e5, magnitudes over 4,
+    // 12 and 60 decades). A nonzero polynomial/rational difference of degree <= 1000 vanishes
+    // on at most 1000 values per line through the sample box (Schwartz-Zippel), i.e. on < 1e-6
+    // of the draws; an analytic difference that is not identically zero behaves the same way
+    // away from its (measure-zero) zero set. Each agreement is a rigorous bound (ball
+    // arithmetic), so rounding can never make a difference look like agreement.
     std::ostringstream fa;
     fa << "< 1e-6 per point, < 1e-" << 6 * agreed << " for all " << agreed
        << " points (Schwartz-Zippel-type count: a nonzero difference of degree <= 1000 vanishes on"
           " < 1e-6 of ~1e9 sampled values per symbol; heuristic for transcendental differences;"
-          " differences below 1e"
-       << tol_exp << " relative are not detected)";
+          " each difference is bounded rigorously below 1e"
+       << tol_exp << " relative)";
     v.false_accept = fa.str();
-    v.detail = std::to_string(agreed) + " random points agree to 1e" + std::to_string(tol_exp) +
-               " relative at " + std::to_string(D) + " digits (max relative difference " +
-               sci(v.max_rel_diff) + ")";
+    v.detail = std::to_string(agreed) + " random points agree: |lhs - rhs| <= " + sci(std::max(max_rel, 1e-300)) +
+               " relative, rigorous bounds from ball arithmetic at up to " + std::to_string(v.digits) + " digits";
     if (abstract) v.detail += "; abstract functions replaced by independent random values";
     return v;
   }
@@ -559,21 +467,46 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   std::ostringstream why;
   if (agreed == 0 && excluded == attempts)
     why << "no valid sample points: the constraints exclude every point tried (" << attempts << ")";
-  else
+  else {
     why << "only " << agreed << " of " << need << " sample points were usable (" << attempts
         << " tried: " << excluded << " outside the assumptions, " << undefined << " undefined, "
-        << outside_real << " outside the real domain of log/sqrt/acos/asin, " << nonreal << " not real, "
-        << unstable << " unstable)";
+        << neither_real << " where neither side is real, " << unknown << " undecided at the precision cap)";
+    if (!unknown_why.empty()) why << "; " << unknown_why;
+  }
   v.reason = why.str();
   v.detail = v.reason;
   return v;
+}
+
+// A symbolic proof is re-witnessed at one admissible point: if the balls there certify a
+// difference, the symbolic stage is wrong (a bug, or a rewrite applied outside its domain).
+// Returns the contradiction's description, or "" when the witness agrees or cannot decide.
+std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  d::PointSampler sampler({lhs, rhs}, ctx);
+  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
+  d::Rng rng(opt.seed ^ 0x5157A1E55ull);
+  const kernel::CompareOptions co = compare_options(opt);
+  for (int attempt = 0; attempt < 12; ++attempt) {
+    bool admissible = false;
+    GiNaC::exmap p = sampler.draw(rng, attempt % 3, &admissible);
+    if (!admissible) continue;
+    Substituted s = substitute_point(lhs, rhs, p, abstract, opt.seed + 977 * (attempt + 1));
+    if (!s.ok) continue;
+    kernel::PointComparison c = kernel::compare_constants(s.l, s.r, co);
+    if (certified_counterexample(c))
+      return "at " + d::join_point(sampler.describe(p)) + ": " + difference_text(c);
+    if (c.kind == kernel::PointComparison::Kind::Agree) return "";
+  }
+  return "";
 }
 
 }  // namespace
 
 // ------------------------------------------------------------------ the cascade
 
-Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+namespace {
+
+Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
   Verdict v;
   ex diff = lhs - rhs;
   double est = estimate_expanded_terms(lhs) + estimate_expanded_terms(rhs);
@@ -643,6 +576,24 @@ Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const 
                           : "both the symbolic stages and the numeric probe are off";
   v.detail = v.reason + "; residual: " + residual;
   return v;
+}
+
+}  // namespace
+
+Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  Verdict v = cascade(lhs, rhs, ctx, opt);
+  if (v.kind != VerdictKind::Proved || !opt.numeric) return v;
+  // Proved symbolically: re-witness numerically. A contradiction is a bug in a symbolic stage
+  // (or a rewrite used outside its domain): never shown as proved.
+  std::string contra = witness_contradiction(lhs, rhs, ctx, opt);
+  if (contra.empty()) return v;
+  Verdict u;
+  u.kind = VerdictKind::Undecided;
+  u.method = v.method;
+  u.reason = "internal error: the symbolic proof (" + v.method + ") is contradicted by the numeric witness " + contra +
+             "; please report this";
+  u.detail = u.reason;
+  return u;
 }
 
 Verdict prove_zero(const ex& e, const SymbolTable& ctx, const ProveOptions& opt) {
@@ -771,15 +722,18 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
       } catch (const std::exception&) {
         continue;  // the argument itself is undefined here: another condition reports it
       }
-      d::RealValue rv = d::eval_real(val, 30);
+      // The argument's sign, certified by ball arithmetic (an argument that is itself not
+      // real breaks an inner condition, which reports it).
+      kernel::Ball b = kernel::enclose_sign(val);
+      if (b.status != kernel::BallStatus::Value) continue;
       ++tested;
       bool bad = false;
-      std::string value_text = rv.ok ? d::format_number(rv.value, 20) : "not real";
+      std::string value_text = b.text(20);
       switch (rc.kind) {
-        case CondKind::Nonzero: bad = rv.ok && rv.exact && rv.value.is_zero(); break;
-        case CondKind::Positive: bad = !rv.ok || !rv.value.is_positive(); break;
-        case CondKind::Nonnegative: bad = !rv.ok || rv.value.is_negative(); break;
-        case CondKind::UnitInterval: bad = !rv.ok || GiNaC::abs(rv.value) > 1; break;
+        case CondKind::Nonzero: bad = b.exact_zero(); break;
+        case CondKind::Positive: bad = b.negative() || b.exact_zero(); break;
+        case CondKind::Nonnegative: bad = b.negative(); break;
+        case CondKind::UnitInterval: bad = kernel::enclose_sign(GiNaC::abs(val) - 1).positive(); break;
       }
       if (bad) {
         violated = true;

@@ -117,10 +117,12 @@ std::vector<ex> ordered_symbols(const ex& e, const SymbolTable& ctx) {
   return out;
 }
 
-numeric sample_value(const Domain& d, Rng& rng, bool wide) {
+numeric sample_value(const Domain& d, Rng& rng, int tier) {
   using K = Domain::Kind;
+  const bool wide = tier > 0;
   if (d.kind != K::Interval) {
-    double u = wide ? -6.0 + 12.0 * rng.uniform() : -2.0 + 4.0 * rng.uniform();
+    double decades = tier >= 2 ? 30.0 : tier == 1 ? 6.0 : 2.0;
+    double u = -decades + 2 * decades * rng.uniform();
     double mag = std::pow(10.0, u);
     int sign = 1;
     if (d.kind == K::Real) sign = rng.below(2) ? -1 : 1;
@@ -135,9 +137,11 @@ numeric sample_value(const Domain& d, Rng& rng, bool wide) {
   }
   double width = hi - lo;
   for (int attempt = 0; attempt < 30; ++attempt) {
-    double t = wide ? 1e-6 + (1 - 2e-6) * rng.uniform() : 0.02 + 0.96 * rng.uniform();
+    double t = tier >= 2 ? (rng.below(2) ? 1e-9 * (1 + rng.uniform()) : 1 - 1e-9 * (1 + rng.uniform()))
+               : wide     ? 1e-6 + (1 - 2e-6) * rng.uniform()
+                          : 0.02 + 0.96 * rng.uniform();
     double x = lo + t * width;
-    numeric q = rational_near(x, width * 1e-2, rng);
+    numeric q = rational_near(x, width * std::min(1e-2, std::min(t, 1 - t)), rng);
     if (q == 1 || q == -1) continue;
     if (d.contains(q)) return q;
   }
@@ -177,9 +181,9 @@ PointSampler::PointSampler(const std::vector<ex>& exprs, const SymbolTable& ctx)
     if (used[i]) cons_.push_back(&all[i]);
 }
 
-GiNaC::exmap PointSampler::draw(Rng& rng, bool wide, bool* admissible) const {
+GiNaC::exmap PointSampler::draw(Rng& rng, int tier, bool* admissible) const {
   GiNaC::exmap p;
-  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, wide);
+  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, tier);
   bool ok = true;
   for (const Constraint* c : cons_)
     if (!c->holds_at(p)) {

@@ -37,9 +37,10 @@ Domain domain_of(const GiNaC::ex& s, const SymbolTable& ctx);
 // GiNaC's traversal order.
 std::vector<GiNaC::ex> ordered_symbols(const GiNaC::ex& e, const SymbolTable& ctx);
 
-// An exact rational drawn from the domain: real -> both signs, magnitude 10^[-2, 2]
-// (wide: 10^[-6, 6]), never 0, +-1 or an integer; intervals -> interior points.
-GiNaC::numeric sample_value(const Domain& d, Rng& rng, bool wide);
+// An exact rational drawn from the domain: real -> both signs, magnitude 10^[-2, 2] (tier 0),
+// 10^[-6, 6] (tier 1) or 10^[-30, 30] (tier 2), never 0, +-1 or an integer; intervals ->
+// interior points (tiers 1 and 2 also close to the ends).
+GiNaC::numeric sample_value(const Domain& d, Rng& rng, int tier);
 
 // Sampling of admissible points for a set of expressions: the symbols they use plus every
 // symbol linked to them through a constraint, and the constraints that apply.
@@ -49,7 +50,7 @@ class PointSampler {
   const std::vector<GiNaC::ex>& symbols() const { return syms_; }
   const std::vector<const Constraint*>& constraints() const { return cons_; }
   // A random point; `admissible` says whether every applicable constraint holds there.
-  GiNaC::exmap draw(Rng& rng, bool wide, bool* admissible) const;
+  GiNaC::exmap draw(Rng& rng, int tier, bool* admissible) const;
   // "m1 = 7/3, m2 = 5/2" in declaration order, and the same as pairs.
   std::vector<std::pair<std::string, std::string>> describe(const GiNaC::exmap& p) const;
 
