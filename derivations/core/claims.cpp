@@ -254,6 +254,7 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
   }
   Verdict v = prove_equal(a, b, table, opt);
   for (auto& sc : side_conditions(a - b, table)) v.side_conditions.push_back(sc);
+  require_defined_on_domain(v);
   return v;
 }
 

@@ -578,10 +578,54 @@ Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const Prov
   return v;
 }
 
+// For a claim refuted at a point where some real symbols are negative: would it hold if they
+// were declared positive? Returns "holds if a, b > 0: declare a, b positive", or "".
+std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
+                             const Verdict& refuted) {
+  std::vector<std::string> names;
+  for (const auto& [name, value] : refuted.point) {
+    const SymbolInfo* info = ctx.find(name);
+    if (info && !info->is_function && info->domain.kind == Domain::Kind::Real && value.rfind('-', 0) == 0)
+      names.push_back(name);
+  }
+  if (names.empty()) return "";
+  SymbolTable narrowed = ctx;
+  // every real symbol of the claim, not only the negative ones of this point
+  names.clear();
+  for (const auto& s : d::ordered_symbols(lhs - rhs, ctx)) {
+    const SymbolInfo* info = ctx.find(GiNaC::ex_to<GiNaC::symbol>(s));
+    if (info && info->domain.kind == Domain::Kind::Real) names.push_back(info->name);
+  }
+  for (const auto& n : names) narrowed.narrow_domain(n, Domain::positive());
+  if (!probe(lhs, rhs, narrowed, opt, "").holds()) return "";
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i ? ", " : "") + names[i];
+  return "holds if " + list + (names.size() > 1 ? " are" : " is") + " positive: declare " + list + " positive";
+}
+
 }  // namespace
+
+void require_defined_on_domain(Verdict& v) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status != SideCondition::Status::Violated) continue;
+    v.kind = VerdictKind::Refuted;
+    v.method += " + side condition";
+    v.point = sc.point;
+    v.lhs_value.clear();
+    v.rhs_value.clear();
+    v.detail = "not defined on the whole declared domain: " + sc.what + " (" + sc.reason + ") " + sc.evidence +
+               "; restrict the declarations or add an assumption";
+    return;
+  }
+}
 
 Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
   Verdict v = cascade(lhs, rhs, ctx, opt);
+  if (v.kind == VerdictKind::Refuted && opt.numeric) {
+    std::string hint = declaration_hint(lhs, rhs, ctx, opt, v);
+    v.hint = hint;
+  }
   if (v.kind != VerdictKind::Proved || !opt.numeric) return v;
   // Proved symbolically: re-witness numerically. A contradiction is a bug in a symbolic stage
   // (or a rewrite used outside its domain): never shown as proved.
@@ -738,7 +782,8 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
       if (bad) {
         violated = true;
         sc.status = SideCondition::Status::Violated;
-        sc.evidence = "fails at " + d::join_point(sampler.describe(p)) + " (value " + value_text + ")";
+        sc.point = sampler.describe(p);
+        sc.evidence = "fails at " + d::join_point(sc.point) + " (value " + value_text + ")";
       }
     }
     if (!violated) {

@@ -49,6 +49,11 @@ Verdict prove_zero(const GiNaC::ex& e, const SymbolTable& ctx, const ProveOption
 // where the sign is evident, otherwise by sampling: Violated with a point, or Unknown).
 std::vector<SideCondition> side_conditions(const GiNaC::ex& e, const SymbolTable& ctx);
 
+// A claim must hold on the whole declared domain: when a side condition is Violated (a point
+// of the domain where a side is certainly undefined), a verdict that holds becomes Refuted
+// with that point as the counterexample. Conditions that are only not guaranteed stay warnings.
+void require_defined_on_domain(Verdict& v);
+
 // Do the declared domains and constraints admit at least one point? (An empty set of
 // assumptions would let anything follow.) Returns an empty string when satisfiable (a point
 // was found), otherwise the reason.

@@ -74,6 +74,7 @@ std::string verdict_evidence(const Verdict& v, const std::string& indent) {
     }
     if (!v.lhs_value.empty() || !v.rhs_value.empty())
       out += indent + "left side = " + v.lhs_value + ", right side = " + v.rhs_value + "\n";
+    if (!v.hint.empty()) out += indent + "hint: " + v.hint + "\n";
   }
   if (v.kind == VerdictKind::Undecided && !v.residual.empty()) out += indent + "residual: " + v.residual + "\n";
   // The prover's own "differs at ..." repeats the counterexample above; rule details (which
@@ -98,6 +99,7 @@ nlohmann::ordered_json verdict_json(const Verdict& v) {
     j["counterexample"] = pt;
     j["lhs_value"] = v.lhs_value;
     j["rhs_value"] = v.rhs_value;
+    if (!v.hint.empty()) j["hint"] = v.hint;
   }
   if (v.kind == VerdictKind::Undecided) {
     if (!v.residual.empty()) j["residual"] = v.residual;

@@ -1121,6 +1121,8 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   } catch (const std::exception&) {
     // conversion problems were reported by the rule already
   }
+  // A claim must hold on the whole declared domain (premises only warn).
+  if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
   // A stable form must equal the form it replaces.
   if (s.stable_of) {
     const Step* other = d.find(*s.stable_of);

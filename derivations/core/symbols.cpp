@@ -167,6 +167,13 @@ std::string Domain::to_string() const {
   return "real";
 }
 
+bool SymbolTable::narrow_domain(const std::string& name, const Domain& d) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) return false;
+  symbols_[it->second].domain = d;
+  return true;
+}
+
 const SymbolInfo& SymbolTable::declare(SymbolInfo info) {
   auto it = by_name_.find(info.name);
   if (it != by_name_.end()) {

@@ -72,6 +72,9 @@ class SymbolTable {
   const SymbolInfo* find(const GiNaC::symbol& s) const;   // reverse lookup by serial
   const std::vector<SymbolInfo>& all() const { return symbols_; }
   void add_constraint(Constraint c) { constraints_.push_back(std::move(c)); }
+  // Narrow the domain of a declared symbol (same GiNaC symbol): used to test which
+  // declaration would make a refuted claim hold. Returns false for an unknown name.
+  bool narrow_domain(const std::string& name, const Domain& d);
   const std::vector<Constraint>& constraints() const { return constraints_; }
   // Abstract function applications (v(t)) are GiNaC functions from a fixed pool; this maps a
   // declared function name to its pool index.

@@ -16,6 +16,7 @@ struct SideCondition {
   std::string reason;        // "divisor", "log argument", "sqrt argument", "acos argument"
   enum class Status { Guaranteed, Violated, Unknown } status = Status::Unknown;
   std::string evidence;      // "m1, m2 positive", or the point where it fails
+  std::vector<std::pair<std::string, std::string>> point;   // Violated: the point (name = exact value)
 };
 
 struct Verdict {
@@ -41,6 +42,10 @@ struct Verdict {
   std::string reason;
 
   std::vector<SideCondition> side_conditions;
+
+  // Refuted: the declaration under which the claim would hold, when one was found
+  // ("holds if a, b are positive: declare a, b positive").
+  std::string hint;
 
   bool holds() const { return kind == VerdictKind::Proved || kind == VerdictKind::HoldsNumerically; }
 };

@@ -455,11 +455,10 @@ Ball enclose_sign(const ex& constant, long start_bits, long max_bits) {
 PointComparison compare_constants(const ex& lhs, const ex& rhs, const CompareOptions& opt) {
   using K = PointComparison::Kind;
   PointComparison out;
-  long start = digits_to_bits(std::max(opt.start_digits, -opt.tol_exponent + 15));
-  for (long p = start;; p *= 4) {
-    long prec = std::min(p, opt.max_bits);
+  for (long digits = std::max(opt.start_digits, -opt.tol_exponent + 15);; digits *= 4) {
+    long prec = std::min(digits_to_bits(digits), opt.max_bits);
     Ball l = enclose(lhs, prec), r = enclose(rhs, prec);
-    out.digits = bits_to_digits(prec);
+    out.digits = prec < opt.max_bits ? digits : bits_to_digits(prec);
     out.lhs_text = l.text(opt.sig);
     out.rhs_text = r.text(opt.sig);
     auto certified_undefined = [](const Ball& b) {

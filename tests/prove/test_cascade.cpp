@@ -62,12 +62,16 @@ TEST_CASE("stage 2: log and exp rules on positive symbols", "[prove][transcenden
     CAPTURE(describe(v));
     REQUIRE(v.kind == VerdictKind::Proved);
   }
-  SECTION("log(x*y) for real x, y is not an identity: never proved") {
+  SECTION("log(x*y) for real x, y is not an identity: refuted where only one side is real") {
     Verdict v = prove_equal(GiNaC::log(x * y), GiNaC::log(x) + GiNaC::log(y), T.t);
     CAPTURE(describe(v));
-    REQUIRE(v.kind != VerdictKind::Proved);
-    // where both sides are real (x, y > 0) they agree; the probe rejects the other points
-    REQUIRE(v.kind != VerdictKind::Refuted);
+    // at x, y < 0 the left side is real and the right side is not: a certified counterexample
+    REQUIRE(v.kind == VerdictKind::Refuted);
+    REQUIRE(v.point.size() == 2);
+    REQUIRE(v.point[0].second.rfind('-', 0) == 0);
+    REQUIRE(v.point[1].second.rfind('-', 0) == 0);
+    // and the checker says which declaration makes it hold
+    REQUIRE(v.hint == "holds if x, y are positive: declare x, y positive");
   }
 }
 
@@ -270,16 +274,33 @@ TEST_CASE("DigitsGuard restores GiNaC::Digits", "[prove][digits]") {
   REQUIRE(static_cast<long>(GiNaC::Digits) == before);
 }
 
-TEST_CASE("the probe tests claims only where every log/root/acos argument is real", "[prove][probe]") {
+TEST_CASE("a claim must hold on the whole declared domain: one side real, the other not, refutes", "[prove][probe]") {
   test::Table T = standard_table();
   ex x = T["x"], y = T["y"];
-  // x, y < 0 would give real values on both sides (-sqrt(xy) against sqrt(xy)) through
-  // imaginary intermediates: such points are outside the real domain and are not counted.
+  // For x, y < 0 the right side sqrt(xy) is real and the left side is not (sqrt of a negative
+  // number): a certified counterexample on an open part of the domain.
   Verdict v = prove_equal(GiNaC::sqrt(x) * GiNaC::sqrt(y), GiNaC::sqrt(x * y), T.t);
   CAPTURE(describe(v));
-  REQUIRE(v.kind == VerdictKind::HoldsNumerically);
+  REQUIRE(v.kind == VerdictKind::Refuted);
+  REQUIRE(v.lhs_value.find("not real") != std::string::npos);
+  REQUIRE(v.hint == "holds if x, y are positive: declare x, y positive");
   // its side conditions say where it is meaningful
   auto conds = side_conditions(GiNaC::sqrt(x) * GiNaC::sqrt(y), T.t);
   REQUIRE(conds.size() == 2);
   for (const auto& c : conds) REQUIRE(c.status == SideCondition::Status::Violated);
+  // acos(x) + asin(x) = pi/2 at x > 1: the left side is not real, the constant right side is
+  Verdict u = prove_equal(GiNaC::acos(T["zr"]) + GiNaC::asin(T["zr"]), GiNaC::Pi / 2, T.t);
+  CAPTURE(describe(u));
+  REQUIRE(u.kind == VerdictKind::Refuted);
+  // log(x^3) = 3 log(x): where x < 0 neither side is real, so no point refutes it, but the
+  // violated side condition x^3 > 0 still fails the claim on the declared (real) domain
+  ex lx3 = GiNaC::log(GiNaC::pow(T["zr"], 3)), l3x = 3 * GiNaC::log(T["zr"]);
+  Verdict w = prove_equal(lx3, l3x, T.t);
+  CAPTURE(describe(w));
+  REQUIRE(w.holds());
+  w.side_conditions = side_conditions(lx3 - l3x, T.t);
+  require_defined_on_domain(w);
+  CAPTURE(describe(w));
+  REQUIRE(w.kind == VerdictKind::Refuted);
+  REQUIRE(!w.point.empty());
 }
