@@ -9,6 +9,7 @@
 #include "derivations/core/printer.hpp"
 #include "derivations/core/prove_detail.hpp"
 #include "derivations/kernel/ball.hpp"
+#include "derivations/kernel/probe.hpp"
 
 namespace dc {
 
@@ -255,13 +256,9 @@ void collect_conditions(const ex& e, std::vector<RawCond>& out) {
   if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
 }
 
-// ------------------------------------------------------------------ stage 4: numeric probe
-//
-// Every comparison goes through the kernel (derivations/kernel/ball.hpp): both sides are
-// enclosed in Arb balls at the sample point, precision raised until the balls decide.
-//   Differ / one side real and the other certified not real  -> a certified counterexample
-//   Agree (difference bounded below the tolerance, rigorously) -> the point supports the claim
-//   neither side real, an exact pole, or undecided at the cap  -> the point is not counted
+}  // namespace
+
+// ------------------------------------------------------------------ the cascade
 
 std::string sci(double x) {
   std::ostringstream os;
@@ -269,240 +266,6 @@ std::string sci(double x) {
   os << std::scientific << x;
   return os.str();
 }
-
-kernel::CompareOptions compare_options(const ProveOptions& opt) {
-  kernel::CompareOptions co;
-  co.start_digits = opt.digits;
-  co.tol_exponent = std::lround(opt.rel_tol_exponent);
-  return co;
-}
-
-bool certified_counterexample(const kernel::PointComparison& c) {
-  using K = kernel::PointComparison::Kind;
-  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
-}
-
-// "lhs = 1.5, rhs = 2.25" / "lhs = 0.4 is real, rhs is not real (log of a negative number)"
-std::string difference_text(const kernel::PointComparison& c) {
-  using K = kernel::PointComparison::Kind;
-  if (c.kind == K::LhsOnly) return "lhs = " + c.lhs_text + " is real, rhs is " + c.rhs_text;
-  if (c.kind == K::RhsOnly) return "rhs = " + c.rhs_text + " is real, lhs is " + c.lhs_text;
-  return "lhs = " + c.lhs_text + ", rhs = " + c.rhs_text;
-}
-
-void set_refuted(Verdict& v, const kernel::PointComparison& c) {
-  v.kind = VerdictKind::Refuted;
-  v.digits = static_cast<int>(c.digits);
-  v.lhs_value = c.lhs_text;
-  v.rhs_value = c.rhs_text;
-  v.max_rel_diff = c.rel_diff;
-}
-
-// Magnitude tier of the k-th draw: most points in 10^[-2, 2], every sixth point in 10^[-6, 6]
-// and every sixth in 10^[-30, 30], so large and tiny values of the declared domain are tested
-// too (a claim that fails only for x > 10^6 is found).
-int tier_of(int attempt, bool failing) {
-  if (failing) return 1 + attempt % 2;
-  switch (attempt % 6) {
-    case 4: return 1;
-    case 5: return 2;
-    default: return 0;
-  }
-}
-
-bool has_imaginary_number(const ex& e) {
-  if (GiNaC::is_a<numeric>(e)) return !GiNaC::ex_to<numeric>(e).is_real();
-  for (std::size_t i = 0; i < e.nops(); ++i)
-    if (has_imaginary_number(e.op(i))) return true;
-  return false;
-}
-
-struct Substituted {
-  bool ok = false;
-  ex l, r;
-};
-
-Substituted substitute_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& p, bool abstract, std::uint64_t fseed) {
-  Substituted s;
-  try {
-    s.l = lhs.subs(p, GiNaC::subs_options::no_pattern);
-    s.r = rhs.subs(p, GiNaC::subs_options::no_pattern);
-    if (abstract) {
-      s.l = d::replace_abstract(s.l, fseed);
-      s.r = d::replace_abstract(s.r, fseed);
-    }
-    s.ok = true;
-  } catch (const std::exception&) {
-    // an exact division by zero while substituting: an isolated point, not a counterexample
-  }
-  return s;
-}
-
-Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
-              const std::string& residual) {
-  using K = kernel::PointComparison::Kind;
-  Verdict v;
-  v.method = "numeric probe";
-  v.residual = residual;
-  const kernel::CompareOptions co = compare_options(opt);
-  const long tol_exp = co.tol_exponent;
-  v.digits = static_cast<int>(std::max<long>(opt.digits, -tol_exp + 15));
-
-  if (has_imaginary_number(lhs) || has_imaginary_number(rhs)) {
-    // The probe decides claims about real quantities (a non-real intermediate means "not
-    // defined here"); a claim written with I is complex-valued by intent.
-    v.kind = VerdictKind::Undecided;
-    v.reason = "the claim contains the imaginary unit: the numeric probe decides real-valued claims only";
-    v.detail = v.reason;
-    return v;
-  }
-  d::PointSampler sampler({lhs, rhs}, ctx);
-  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
-  std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
-
-  if (sampler.symbols().empty() && !abstract) {
-    kernel::PointComparison c = kernel::compare_constants(lhs, rhs, co);
-    if (certified_counterexample(c)) {
-      set_refuted(v, c);
-      v.detail = "the constants differ: " + difference_text(c) + " (certified by ball arithmetic at " +
-                 std::to_string(c.digits) + " digits)";
-      return v;
-    }
-    if (c.kind == K::Agree) {
-      v.kind = VerdictKind::HoldsNumerically;
-      v.points = 1;
-      v.digits = static_cast<int>(c.digits);
-      v.lhs_value = c.lhs_text;
-      v.rhs_value = c.rhs_text;
-      v.max_rel_diff = c.rel_diff;
-      v.false_accept = "constant claim: |lhs - rhs| <= " + sci(std::max(c.rel_diff, 1e-300)) +
-                       " relative, a rigorous ball-arithmetic bound at " + std::to_string(c.digits) +
-                       " digits; only a false identity closer than that could pass";
-      v.detail = "constants agree: " + c.lhs_text + " (difference bounded by " + sci(c.rel_diff) +
-                 " relative at " + std::to_string(c.digits) + " digits)";
-      return v;
-    }
-    v.kind = VerdictKind::Undecided;
-    v.reason = "the constant claim cannot be decided: " + c.why;
-    v.detail = v.reason;
-    return v;
-  }
-
-  d::Rng rng(opt.seed);
-  const int need = std::max(1, opt.probe_points);
-  const int max_attempts = std::max(100, need * 40);
-  int agreed = 0, attempts = 0, excluded = 0, undefined = 0, neither_real = 0, unknown = 0;
-  std::string unknown_why;
-  double max_rel = 0;
-  long max_digits = 0;
-  for (; attempts < max_attempts && agreed < need; ++attempts) {
-    int tier = tier_of(attempts, attempts >= need * 10);
-    bool admissible = false;
-    GiNaC::exmap p = sampler.draw(rng, tier, &admissible);
-    if (!admissible) {
-      ++excluded;
-      continue;
-    }
-    std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
-    Substituted s = substitute_point(lhs, rhs, p, abstract, fseed);
-    if (!s.ok) {
-      ++undefined;
-      continue;
-    }
-    kernel::PointComparison c = kernel::compare_constants(s.l, s.r, co);
-    if (c.kind == K::Agree) {
-      ++agreed;
-      max_rel = std::max(max_rel, c.rel_diff);
-      max_digits = std::max(max_digits, c.digits);
-      continue;
-    }
-    if (c.kind == K::NeitherReal) {
-      ++neither_real;
-      continue;
-    }
-    if (c.kind == K::IsolatedPole) {
-      ++undefined;
-      continue;
-    }
-    if (c.kind == K::Unknown) {
-      ++unknown;
-      if (unknown_why.empty()) unknown_why = c.why;
-      continue;
-    }
-    set_refuted(v, c);
-    v.points = agreed;
-    v.point = sampler.describe(p);
-    std::string where = v.point.empty() ? std::string("an abstract-function sample") : d::join_point(v.point);
-    v.detail = "differs at " + where + ": " + difference_text(c) + " (certified by ball arithmetic at " +
-               std::to_string(c.digits) + " digits)";
-    if (abstract) v.detail += " (abstract function values drawn at random)";
-    return v;
-  }
-  if (agreed >= need) {
-    v.kind = VerdictKind::HoldsNumerically;
-    v.points = agreed;
-    v.max_rel_diff = max_rel;
-    v.digits = static_cast<int>(std::max<long>(v.digits, max_digits));
-    // False-accept bound (stated, heuristic for transcendental differences): each symbol is
-    // drawn from roughly 1e9 distinct rationals (random denominator ~1e5, magnitudes over 4,
-    // 12 and 60 decades). A nonzero polynomial/rational difference of degree <= 1000 vanishes
-    // on at most 1000 values per line through the sample box (Schwartz-Zippel), i.e. on < 1e-6
-    // of the draws; an analytic difference that is not identically zero behaves the same way
-    // away from its (measure-zero) zero set. Each agreement is a rigorous bound (ball
-    // arithmetic), so rounding can never make a difference look like agreement.
-    std::ostringstream fa;
-    fa << "< 1e-6 per point, < 1e-" << 6 * agreed << " for all " << agreed
-       << " points (Schwartz-Zippel-type count: a nonzero difference of degree <= 1000 vanishes on"
-          " < 1e-6 of ~1e9 sampled values per symbol; heuristic for transcendental differences;"
-          " each difference is bounded rigorously below 1e"
-       << tol_exp << " relative)";
-    v.false_accept = fa.str();
-    v.detail = std::to_string(agreed) + " random points agree: |lhs - rhs| <= " + sci(std::max(max_rel, 1e-300)) +
-               " relative, rigorous bounds from ball arithmetic at up to " + std::to_string(v.digits) + " digits";
-    if (abstract) v.detail += "; abstract functions replaced by independent random values";
-    return v;
-  }
-  v.kind = VerdictKind::Undecided;
-  v.points = agreed;
-  std::ostringstream why;
-  if (agreed == 0 && excluded == attempts)
-    why << "no valid sample points: the constraints exclude every point tried (" << attempts << ")";
-  else {
-    why << "only " << agreed << " of " << need << " sample points were usable (" << attempts
-        << " tried: " << excluded << " outside the assumptions, " << undefined << " undefined, "
-        << neither_real << " where neither side is real, " << unknown << " undecided at the precision cap)";
-    if (!unknown_why.empty()) why << "; " << unknown_why;
-  }
-  v.reason = why.str();
-  v.detail = v.reason;
-  return v;
-}
-
-// A symbolic proof is re-witnessed at one admissible point: if the balls there certify a
-// difference, the symbolic stage is wrong (a bug, or a rewrite applied outside its domain).
-// Returns the contradiction's description, or "" when the witness agrees or cannot decide.
-std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
-  d::PointSampler sampler({lhs, rhs}, ctx);
-  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
-  d::Rng rng(opt.seed ^ 0x5157A1E55ull);
-  const kernel::CompareOptions co = compare_options(opt);
-  for (int attempt = 0; attempt < 12; ++attempt) {
-    bool admissible = false;
-    GiNaC::exmap p = sampler.draw(rng, attempt % 3, &admissible);
-    if (!admissible) continue;
-    Substituted s = substitute_point(lhs, rhs, p, abstract, opt.seed + 977 * (attempt + 1));
-    if (!s.ok) continue;
-    kernel::PointComparison c = kernel::compare_constants(s.l, s.r, co);
-    if (certified_counterexample(c))
-      return "at " + d::join_point(sampler.describe(p)) + ": " + difference_text(c);
-    if (c.kind == kernel::PointComparison::Kind::Agree) return "";
-  }
-  return "";
-}
-
-}  // namespace
-
-// ------------------------------------------------------------------ the cascade
 
 namespace {
 
@@ -568,7 +331,7 @@ Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const Prov
   } else {
     residual = print_text(diff, ctx);
   }
-  if (opt.numeric) return probe(lhs, rhs, ctx, opt, residual);
+  if (opt.numeric) return kernel::probe(lhs, rhs, ctx, opt, residual);
   v.kind = VerdictKind::Undecided;
   v.method = last_method;
   v.residual = residual;
@@ -597,7 +360,7 @@ std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ct
     if (info && info->domain.kind == Domain::Kind::Real) names.push_back(info->name);
   }
   for (const auto& n : names) narrowed.narrow_domain(n, Domain::positive());
-  if (!probe(lhs, rhs, narrowed, opt, "").holds()) return "";
+  if (!kernel::probe(lhs, rhs, narrowed, opt, "").holds()) return "";
   std::string list;
   for (std::size_t i = 0; i < names.size(); ++i) list += (i ? ", " : "") + names[i];
   return "holds if " + list + (names.size() > 1 ? " are" : " is") + " positive: declare " + list + " positive";
@@ -629,7 +392,7 @@ Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const 
   if (v.kind != VerdictKind::Proved || !opt.numeric) return v;
   // Proved symbolically: re-witness numerically. A contradiction is a bug in a symbolic stage
   // (or a rewrite used outside its domain): never shown as proved.
-  std::string contra = witness_contradiction(lhs, rhs, ctx, opt);
+  std::string contra = kernel::witness_contradiction(lhs, rhs, ctx, opt);
   if (contra.empty()) return v;
   Verdict u;
   u.kind = VerdictKind::Undecided;
