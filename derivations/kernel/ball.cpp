@@ -1,6 +1,7 @@
 // Rigorous evaluation with Arb (see ball.hpp). One recursive walk over the GiNaC tree; each
 // node returns a status and, for Value, an arb ball that contains the true real value.
 #include "derivations/kernel/ball.hpp"
+#include "derivations/kernel/ball_impl.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -17,11 +18,6 @@ namespace dc::kernel {
 using GiNaC::ex;
 using GiNaC::numeric;
 
-struct Ball::Impl {
-  arb_t v;
-  Impl() { arb_init(v); }
-  ~Impl() { arb_clear(v); }
-};
 
 Ball::Ball() : impl(std::make_unique<Impl>()) {}
 Ball::~Ball() = default;
@@ -452,94 +448,111 @@ Ball enclose_sign(const ex& constant, long start_bits, long max_bits) {
   }
 }
 
+PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, int sig) {
+  using K = PointComparison::Kind;
+  PointComparison out;
+  const long prec = std::max(l.prec_bits, r.prec_bits) + 16;
+  struct {
+    long tol_exponent;
+    int sig;
+  } opt{tol_exponent, sig};
+  out.lhs_text = l.text(opt.sig);
+  out.rhs_text = r.text(opt.sig);
+  auto certified_undefined = [](const Ball& b) {
+    return b.status == BallStatus::NotReal || b.status == BallStatus::Pole;
+  };
+  if (certified_undefined(l) && certified_undefined(r)) {
+    bool pole = l.status == BallStatus::Pole || r.status == BallStatus::Pole;
+    out.kind = pole && !(l.status == BallStatus::NotReal || r.status == BallStatus::NotReal) ? K::IsolatedPole
+                                                                                            : K::NeitherReal;
+    out.why = "lhs " + l.text() + ", rhs " + r.text();
+    return out;
+  }
+  if (l.status == BallStatus::Pole || r.status == BallStatus::Pole) {
+    out.kind = K::IsolatedPole;
+    out.why = (l.status == BallStatus::Pole ? "lhs " + l.text() : "rhs " + r.text());
+    return out;
+  }
+  if (l.status == BallStatus::Value && r.status == BallStatus::NotReal) {
+    out.kind = K::LhsOnly;
+    return out;
+  }
+  if (r.status == BallStatus::Value && l.status == BallStatus::NotReal) {
+    out.kind = K::RhsOnly;
+    return out;
+  }
+  if (l.status == BallStatus::Value && r.status == BallStatus::Value) {
+    arb_t d;
+    arb_init(d);
+    arb_sub(d, l.impl->v, r.impl->v, prec);
+    bool differ = !arb_contains_zero(d);
+    // Agree: upper bound of |d| <= 10^tol * max(lower bounds of |l|, |r|, 1e-300)
+    arf_t dub, slb, t;
+    arf_init(dub);
+    arf_init(slb);
+    arf_init(t);
+    arb_get_abs_ubound_arf(dub, d, prec);
+    arb_get_abs_lbound_arf(slb, l.impl->v, prec);
+    arb_get_abs_lbound_arf(t, r.impl->v, prec);
+    if (arf_cmp(t, slb) > 0) arf_set(slb, t);
+    arb_t floor_, tol, bound;
+    arb_init(floor_);
+    arb_init(tol);
+    arb_init(bound);
+    arb_set_ui(floor_, 10);
+    arb_pow_ui(floor_, floor_, 300, 64);
+    arb_inv(floor_, floor_, 64);
+    arb_get_lbound_arf(t, floor_, 64);
+    if (arf_cmp(t, slb) > 0) arf_set(slb, t);
+    arb_set_ui(tol, 10);
+    arb_pow_ui(tol, tol, static_cast<ulong>(-opt.tol_exponent), 64);
+    arb_set_arf(bound, slb);
+    arb_div(bound, bound, tol, 64);
+    arb_get_lbound_arf(t, bound, 64);
+    bool agree = !differ && arf_cmp(dub, t) <= 0;
+    // relative difference (estimate for Differ, bound for Agree)
+    if (arf_is_zero(slb)) out.rel_diff = 0;
+    else {
+      arf_div(t, agree ? dub : arb_midref(d), slb, 64, ARF_RND_UP);
+      out.rel_diff = std::abs(arf_get_d(t, ARF_RND_UP));
+    }
+    arb_clear(floor_);
+    arb_clear(tol);
+    arb_clear(bound);
+    arf_clear(dub);
+    arf_clear(slb);
+    arf_clear(t);
+    arb_clear(d);
+    if (differ) {
+      out.kind = K::Differ;
+      // enough digits to show the difference
+      for (int sig = opt.sig; sig <= 200 && out.lhs_text == out.rhs_text; sig += 10) {
+        out.lhs_text = l.text(sig);
+        out.rhs_text = r.text(sig);
+      }
+      return out;
+    }
+    if (agree) {
+      out.kind = K::Agree;
+      return out;
+    }
+  }
+  out.kind = K::Unknown;
+  out.why = l.status != BallStatus::Value ? "lhs: " + l.why
+            : r.status != BallStatus::Value ? "rhs: " + r.why
+                                            : "the difference is not resolved";
+  return out;
+}
+
 PointComparison compare_constants(const ex& lhs, const ex& rhs, const CompareOptions& opt) {
   using K = PointComparison::Kind;
   PointComparison out;
   for (long digits = std::max(opt.start_digits, -opt.tol_exponent + 15);; digits *= 4) {
     long prec = std::min(digits_to_bits(digits), opt.max_bits);
     Ball l = enclose(lhs, prec), r = enclose(rhs, prec);
+    out = compare_balls(l, r, opt.tol_exponent, opt.sig);
     out.digits = prec < opt.max_bits ? digits : bits_to_digits(prec);
-    out.lhs_text = l.text(opt.sig);
-    out.rhs_text = r.text(opt.sig);
-    auto certified_undefined = [](const Ball& b) {
-      return b.status == BallStatus::NotReal || b.status == BallStatus::Pole;
-    };
-    if (certified_undefined(l) && certified_undefined(r)) {
-      bool pole = l.status == BallStatus::Pole || r.status == BallStatus::Pole;
-      out.kind = pole && !(l.status == BallStatus::NotReal || r.status == BallStatus::NotReal) ? K::IsolatedPole
-                                                                                              : K::NeitherReal;
-      out.why = "lhs " + l.text() + ", rhs " + r.text();
-      return out;
-    }
-    if (l.status == BallStatus::Pole || r.status == BallStatus::Pole) {
-      out.kind = K::IsolatedPole;
-      out.why = (l.status == BallStatus::Pole ? "lhs " + l.text() : "rhs " + r.text());
-      return out;
-    }
-    if (l.status == BallStatus::Value && r.status == BallStatus::NotReal) {
-      out.kind = K::LhsOnly;
-      return out;
-    }
-    if (r.status == BallStatus::Value && l.status == BallStatus::NotReal) {
-      out.kind = K::RhsOnly;
-      return out;
-    }
-    if (l.status == BallStatus::Value && r.status == BallStatus::Value) {
-      arb_t d;
-      arb_init(d);
-      arb_sub(d, l.impl->v, r.impl->v, prec);
-      bool differ = !arb_contains_zero(d);
-      // Agree: upper bound of |d| <= 10^tol * max(lower bounds of |l|, |r|, 1e-300)
-      arf_t dub, slb, t;
-      arf_init(dub);
-      arf_init(slb);
-      arf_init(t);
-      arb_get_abs_ubound_arf(dub, d, prec);
-      arb_get_abs_lbound_arf(slb, l.impl->v, prec);
-      arb_get_abs_lbound_arf(t, r.impl->v, prec);
-      if (arf_cmp(t, slb) > 0) arf_set(slb, t);
-      arb_t floor_, tol, bound;
-      arb_init(floor_);
-      arb_init(tol);
-      arb_init(bound);
-      arb_set_ui(floor_, 10);
-      arb_pow_ui(floor_, floor_, 300, 64);
-      arb_inv(floor_, floor_, 64);
-      arb_get_lbound_arf(t, floor_, 64);
-      if (arf_cmp(t, slb) > 0) arf_set(slb, t);
-      arb_set_ui(tol, 10);
-      arb_pow_ui(tol, tol, static_cast<ulong>(-opt.tol_exponent), 64);
-      arb_set_arf(bound, slb);
-      arb_div(bound, bound, tol, 64);
-      arb_get_lbound_arf(t, bound, 64);
-      bool agree = !differ && arf_cmp(dub, t) <= 0;
-      // relative difference (estimate for Differ, bound for Agree)
-      if (arf_is_zero(slb)) out.rel_diff = 0;
-      else {
-        arf_div(t, agree ? dub : arb_midref(d), slb, 64, ARF_RND_UP);
-        out.rel_diff = std::abs(arf_get_d(t, ARF_RND_UP));
-      }
-      arb_clear(floor_);
-      arb_clear(tol);
-      arb_clear(bound);
-      arf_clear(dub);
-      arf_clear(slb);
-      arf_clear(t);
-      arb_clear(d);
-      if (differ) {
-        out.kind = K::Differ;
-        // enough digits to show the difference
-        for (int sig = opt.sig; sig <= 200 && out.lhs_text == out.rhs_text; sig += 10) {
-          out.lhs_text = l.text(sig);
-          out.rhs_text = r.text(sig);
-        }
-        return out;
-      }
-      if (agree) {
-        out.kind = K::Agree;
-        return out;
-      }
-    }
+    if (out.kind != K::Unknown) return out;
     if (prec >= opt.max_bits) {
       out.kind = K::Unknown;
       std::string w = l.status != BallStatus::Value ? "lhs: " + l.why

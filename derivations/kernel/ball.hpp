@@ -85,6 +85,10 @@ struct CompareOptions {
   int sig = 20;                     // significant digits of the reported values
 };
 
+// Compare two enclosures at the precision they were computed with (Unknown when they do not
+// decide; the caller may recompute at a higher precision).
+PointComparison compare_balls(const Ball& lhs, const Ball& rhs, long tol_exponent = -30, int sig = 20);
+
 // Compare two constant expressions (a sample point already substituted), raising the
 // precision until the comparison is decided or the cap is reached.
 PointComparison compare_constants(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const CompareOptions& opt = {});
