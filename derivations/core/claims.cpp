@@ -342,7 +342,7 @@ class ClaimLine {
     if (kind == "series_first_order") {
       ex p = to_ginac(*point_node_, table_);
       std::string why;
-      auto s = series_first_order(lhs, x, p, &why);
+      auto s = series_first_order(lhs, x, p, &why, &table_);
       if (!s) {
         Verdict v;
         v.kind = VerdictKind::Undecided;

@@ -1,6 +1,8 @@
 // Limits and first-order expansions (GiNaC has no limit()); see limit.hpp.
 #include "derivations/core/limit.hpp"
 
+#include "derivations/kernel/ball.hpp"
+
 #include <sstream>
 #include <stdexcept>
 
@@ -239,9 +241,51 @@ ex first_order(const ex& f, const std::vector<GiNaC::symbol>& smalls) {
   }
 }
 
-std::optional<ex> series_first_order(const ex& f, const GiNaC::symbol& x_in, const ex& point,
-                                     std::string* reason) {
-  const ex x = resolve_symbol(x_in, f);
+namespace {
+
+// f - s = O((x - point)^2) on the side `side` of the point, checked with ball arithmetic at
+// h = 10^-8 and 10^-16 (other symbols at an admissible sample point): the remainder must fall
+// by at least 10^-14 when h falls by 10^-8 (a remainder of order h or h log h does not). An
+// expansion taken from one side (GiNaC expands abs(eps), sqrt(eps^2) for eps > 0) is caught
+// on the other. Returns "" when the check passes or cannot be carried out on this side.
+std::string check_series_side(const ex& f, const ex& s, const ex& x, const ex& point, int side, const SymbolTable& ctx) {
+  d::PointSampler sampler({f, s, point}, ctx);
+  d::Rng rng(20261123);
+  for (int attempt = 0; attempt < 10; ++attempt) {
+    bool adm = false;
+    GiNaC::exmap p = sampler.draw(rng, 0, &adm);
+    if (!adm) continue;
+    p.erase(x);
+    ex rem[2];
+    try {
+      const long ks[2] = {8, 16};
+      for (int i = 0; i < 2; ++i) {
+        GiNaC::exmap q = p;
+        q[x] = point.subs(p, GiNaC::subs_options::no_pattern) + side * pow10(-ks[i]);
+        // this side must belong to the declared domain and the assumptions
+        const ex xv = q[x];
+        if (GiNaC::is_a<numeric>(xv) && !d::domain_of(x, ctx).contains(GiNaC::ex_to<numeric>(xv))) return "";
+        for (const Constraint& c : ctx.constraints())
+          if (!c.holds_at(q)) return "";
+        rem[i] = GiNaC::abs(f.subs(q, GiNaC::subs_options::no_pattern) - s.subs(q, GiNaC::subs_options::no_pattern));
+      }
+    } catch (const std::exception&) {
+      continue;   // undefined there
+    }
+    kernel::Ball b = kernel::enclose_sign(rem[1] - pow10(-14) * rem[0], 256, 1 << 14);
+    if (b.status != kernel::BallStatus::Value) continue;   // not defined on this side here
+    if (b.positive())
+      return std::string("the first-order expansion does not hold for x ") + (side > 0 ? ">" : "<") +
+             " the point: the remainder is not O((x - point)^2) there (the expansion was taken from the other side; "
+             "restrict the declared domain to one side)";
+    return "";
+  }
+  return "";
+}
+
+}  // namespace
+
+static std::optional<ex> series_first_order_raw(const ex& f, const ex& x, const ex& point, std::string* reason) {
   try {
     ex f0 = f.subs(x == point);
     ex f1 = GiNaC::diff(f, GiNaC::ex_to<GiNaC::symbol>(x)).subs(x == point);
@@ -267,6 +311,30 @@ std::optional<ex> series_first_order(const ex& f, const GiNaC::symbol& x_in, con
     if (reason) *reason = classify_series_failure(e.what());
     return std::nullopt;
   }
+}
+
+std::optional<ex> series_first_order(const ex& f, const GiNaC::symbol& x_in, const ex& point, std::string* reason,
+                                     const SymbolTable* ctx) {
+  const ex x = resolve_symbol(x_in, f);
+  auto s = series_first_order_raw(f, x, point, reason);
+  if (!s || !ctx) return s;
+  // The expansion must hold on every side of the point that the declared domain of x allows.
+  const Domain dom = d::domain_of(x, *ctx);
+  for (int side : {+1, -1}) {
+    bool allowed = true;
+    try {
+      ex probe_pt = point + side * pow10(-8);
+      if (GiNaC::is_a<numeric>(probe_pt)) allowed = dom.contains(GiNaC::ex_to<numeric>(probe_pt));
+    } catch (const std::exception&) {
+    }
+    if (!allowed) continue;
+    std::string why = check_series_side(f, *s, x, point, side, *ctx);
+    if (!why.empty()) {
+      if (reason) *reason = why;
+      return std::nullopt;
+    }
+  }
+  return s;
 }
 
 }  // namespace dc

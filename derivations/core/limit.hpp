@@ -31,7 +31,11 @@ LimitResult compute_limit(const GiNaC::ex& f, const GiNaC::symbol& x, const GiNa
 GiNaC::ex first_order(const GiNaC::ex& f, const std::vector<GiNaC::symbol>& smalls);
 
 // f = f(point) + f'(point)(x - point) + O((x-point)^2): the first-order series of f in x.
+// With `ctx`, the expansion is checked (ball arithmetic) on every side of the point that the
+// declared domain of x allows; one that holds only from one side (abs(x) = x + O(x^2) at 0 for
+// real x) gives nullopt with the reason.
 std::optional<GiNaC::ex> series_first_order(const GiNaC::ex& f, const GiNaC::symbol& x,
-                                            const GiNaC::ex& point, std::string* reason = nullptr);
+                                            const GiNaC::ex& point, std::string* reason = nullptr,
+                                            const SymbolTable* ctx = nullptr);
 
 }  // namespace dc

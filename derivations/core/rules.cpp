@@ -751,7 +751,7 @@ Verdict Checker::limit_or_series(const Relation& claim, bool is_limit) {
     res_.derived = value_inf ? (value_inf > 0 ? "oo" : "-oo") : text(value);
   } else {
     std::string why;
-    auto s = series_first_order(f, GiNaC::ex_to<GiNaC::symbol>(x), point, &why);
+    auto s = series_first_order(f, GiNaC::ex_to<GiNaC::symbol>(x), point, &why, &d_.symbols);
     if (!s) return undecided("series", why.empty() ? "series expansion failed" : why);
     value = *s;
     how = "series (first order)";

@@ -4,6 +4,7 @@
 // floating point at once: the expressions here are built from ex, as the parser builds them.)
 #include <catch2/catch.hpp>
 
+#include "derivations/core/limit.hpp"
 #include "derivations/kernel/ball.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "../prove/support.hpp"
@@ -90,4 +91,25 @@ TEST_CASE("rigorous quadrature checks definite integrals whose bound is in the i
   if (a.status == BallStatus::Value) REQUIRE(compare_balls(a, enclose(1, 96)).kind != K::Differ);
   // the integrand is not real on the interval
   REQUIRE(integrate_constant(GiNaC::log(t), t, -2, -1, 96).status != BallStatus::Value);
+}
+
+TEST_CASE("a first-order series must hold on every side the declared domain allows", "[kernel][series]") {
+  for (auto [dom, expect_ok] : {std::pair{Domain::real(), false}, std::pair{Domain::positive(), true},
+                                std::pair{Domain::negative(), false}}) {
+    test::Table T;
+    T.add("x", dom);
+    const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(T["x"]);
+    std::string why;
+    auto s = series_first_order(GiNaC::abs(x), x, 0, &why, &T.t);
+    CAPTURE(dom.to_string(), why);
+    // abs(x) = x + O(x^2) holds only from the right: for real or negative x it is not proved
+    REQUIRE(s.has_value() == expect_ok);
+    if (expect_ok) REQUIRE(GiNaC::normal(*s - x).is_zero());
+  }
+  test::Table T;
+  T.add("x", Domain::real());
+  const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(T["x"]);
+  auto s = series_first_order(GiNaC::sin(x) / x, x, 0, nullptr, &T.t);
+  REQUIRE(s.has_value());
+  REQUIRE(GiNaC::normal(*s - 1).is_zero());
 }
