@@ -2,6 +2,8 @@
 // domain_parse.cpp and to_ginac.cpp).
 #include "derivations/core/symbols.hpp"
 
+#include "derivations/kernel/ball.hpp"
+
 #include <cctype>
 #include <sstream>
 
@@ -237,26 +239,19 @@ bool Constraint::holds_at(const GiNaC::exmap& point) const {
   } catch (const std::exception&) {
     return false;  // undefined at this point (division by zero): not admissible
   }
-  GiNaC::numeric n;
-  if (GiNaC::is_a<GiNaC::numeric>(d)) {
-    n = GiNaC::ex_to<GiNaC::numeric>(d);
+  // The sign of lhs - rhs, certified by ball arithmetic (exact for rationals); a point where
+  // it cannot be certified (a difference not separated from 0) is not admissible.
+  int s;
+  if (GiNaC::is_a<GiNaC::numeric>(d) && GiNaC::ex_to<GiNaC::numeric>(d).is_rational()) {
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(d);
+    s = n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
   } else {
-    GiNaC::ex v;
-    try {
-      DigitsGuard g(60);
-      v = d.evalf();
-    } catch (const std::exception&) {
-      return false;
-    }
-    if (!GiNaC::is_a<GiNaC::numeric>(v)) return false;  // a symbol without a value
-    n = GiNaC::ex_to<GiNaC::numeric>(v);
-    // A float difference within rounding of zero cannot decide a strict or non-strict
-    // inequality: treat the point as not admissible (the sampler just draws another).
-    if (n.is_real() && GiNaC::abs(n) < GiNaC::numeric(1, 1) * GiNaC::pow(GiNaC::numeric(10), -40))
-      return false;
+    kernel::Ball b = kernel::enclose_sign(d, 128, 1 << 14);
+    if (b.positive()) s = 1;
+    else if (b.negative()) s = -1;
+    else if (b.exact_zero()) s = 0;
+    else return false;
   }
-  if (!n.is_real()) return false;
-  int s = n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
   switch (op) {
     case Op::Lt: return s < 0;
     case Op::Le: return s <= 0;
