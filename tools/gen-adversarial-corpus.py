@@ -212,6 +212,13 @@ claim(P, "true", "prec_true_log_difference", "log(1+x) - log(x)", "log(1+1/x)",
       "the left side cancels catastrophically for huge x", {"x": POS}, dps=700, mag=300)
 claim(P, "true", "prec_true_huge_argument_square", "cos(10^30*x)^2", "(1+cos(2*10^30*x))/2",
       "double angle at arguments of size 1e30", {"x": REAL}, dps=200)
+claim(P, "false", "prec_cubic_correction", "x + 10^(-100)*x^3", "x",
+      "relative difference 1e-100 x^2: below 1e-30 unless |x| > 1e35, yet nonzero for every x != 0", {"x": REAL},
+      w={"x": "1"}, dps=300)
+claim(P, "false", "prec_sqrt_tiny_shift", "sqrt(x^2 + 10^(-80))", "abs(x)", "differs visibly only for |x| below 1e-35",
+      {"x": REAL}, w={"x": "10^(-40)"}, dps=300)
+claim(P, "true", "prec_true_softplus", "log(exp(x) + 1) - x", "log(1 + exp(-x))",
+      "the left side cancels catastrophically for large x; the right side is about exp(-x)", {"x": REAL}, dps=300, mag=2)
 
 # ---------------------------------------------------------------- partial-domain identities
 PD = "partial_domain"
@@ -300,6 +307,18 @@ claim(PD, "false", "pd_atan_double_beyond_one", "2*atan(x)", "atan(2*x/(1-x^2)) 
       {"x": REAL}, w={"x": "1/2"})
 claim(PD, "true", "pd_true_acos_half_angle", "acos(x)", "2*asin(sqrt((1-x)/2))", "x in [-1, 1]", {"x": "in [-1, 1]"})
 claim(PD, "true", "pd_true_atan_as_asin", "atan(x)", "asin(x/sqrt(1+x^2))", "every real x", {"x": REAL})
+claim(PD, "false", "pd_acos_cos_rational_end", "acos(cos(x))", "x",
+      "355/113 > pi: on (pi, 355/113], a sliver of width 2.7e-7, acos(cos x) = 2 pi - x", {"x": "in [0, 355/113]"},
+      w={"x": "355/113"})
+claim(PD, "true", "pd_true_acos_cos_rational_end", "acos(cos(x))", "x", "311/99 < pi", {"x": "in [0, 311/99]"})
+claim(PD, "false", "pd_asin_sin_decimal_end", "asin(sin(x))", "x",
+      "1.5708 > pi/2 by 3.7e-6: near the ends asin(sin x) = pi - x or -pi - x", {"x": "in [-1.5708, 1.5708]"},
+      w={"x": "1.5708"})
+claim(PD, "true", "pd_true_asin_as_atan", "asin(x)", "atan(x/sqrt(1-x^2))", "x in (-1, 1)", {"x": "in (-1, 1)"})
+claim(PD, "true", "pd_true_cos_asin", "cos(asin(x))", "sqrt(1-x^2)", "cos is >= 0 on [-pi/2, pi/2]", {"x": "in [-1, 1]"})
+claim(PD, "true", "pd_true_cos_atan", "cos(atan(x))", "1/sqrt(1+x^2)", "every real x", {"x": REAL})
+claim(PD, "false", "pd_sin_acos", "sin(acos(x))", "x", "it is sqrt(1 - x^2); agrees only at x = 1/sqrt(2)",
+      {"x": "in [-1, 1]"}, w={"x": "0"})
 
 # ---------------------------------------------------------------- assumptions
 A = "assumptions"
@@ -356,6 +375,15 @@ claim(A, "true", "as_true_large_product", "sqrt(x*y)", "sqrt(x)*sqrt(y)", "x > 1
       assume="x > 1000000, y > x", mag=10)
 claim(A, "true", "as_true_atan_double_beyond_one", "2*atan(x)", "atan(2*x/(1-x^2)) + pi", "x > 1",
       assume="x > 1")
+claim(A, "false", "as_tinier_negative_slice", "sqrt(x^2)", "x", "x in (-1e-30, 0) is allowed",
+      assume="x > -10^(-30)", w={"x": "-10^(-31)"})
+claim(A, "false", "as_chain_allows_negative", "abs(x)", "x", "x > y > -1 still allows x in (-1, 0)",
+      assume="x > y, y > -1", w={"x": "-1/2", "y": "-3/4"})
+claim(A, "false", "as_square_constraint", "sqrt(x^2)", "x", "x^2 > 1 allows x < -1", assume="x^2 > 1",
+      w={"x": "-2"})
+claim(A, "true", "as_true_cube_constraint", "sqrt(x^2)", "x", "x^3 > 1 means x > 1", assume="x^3 > 1")
+claim(A, "true", "as_true_product_positive", "abs(x*y)", "x*y", "x > 0 and y > x make both positive",
+      assume="x > 0, y > x")
 
 # ---------------------------------------------------------------- suspicious but true
 S = "suspicious_true"
@@ -395,6 +423,10 @@ claim(S, "true", "st_cyclotomic", "x^8 - 1", "(x-1)*(x+1)*(x^2+1)*(x^4+1)", "fac
 claim(S, "true", "st_lagrange_identity", "(a^2+b^2)*(c^2+d^2)", "(a*c-b*d)^2 + (a*d+b*c)^2",
       "Brahmagupta-Fibonacci", {"a": REAL, "b": REAL, "c": REAL, "d": REAL})
 claim(S, "true", "st_atan_double", "2*atan(x)", "atan(2*x/(1-x^2))", "valid for |x| < 1", {"x": "in (-1, 1)"})
+claim(S, "true", "st_gudermann", "atan(exp(x)) - atan(exp(-x))", "2*atan(exp(x)) - pi/2",
+      "atan(t) + atan(1/t) = pi/2 for t > 0", {"x": REAL})
+claim(S, "true", "st_sqrt_factor", "sqrt(x^2 + 1)", "abs(x)*sqrt(1 + 1/x^2)", "x != 0 (removable at 0)", {"x": REAL})
+claim(S, "true", "st_tan_quotient", "tan(x)", "sin(x)/cos(x)", "both undefined at the same poles", {"x": REAL})
 claim(S, "false", "st_false_sin_triple", "sin(3*x)", "3*sin(x) - 3*sin(x)^3", "the cubic coefficient is 4",
       {"x": REAL}, w={"x": "1"})
 claim(S, "false", "st_false_cos_pi_7_product", "cos(pi/7)*cos(2*pi/7)*cos(4*pi/7)", "1/8", "it is -1/8")
@@ -437,6 +469,8 @@ LOCALS.update({"pi": sympy.pi, "abs": sympy.Abs, "log": sympy.log, "exp": sympy.
 
 
 def parse(text):
+    # decimals are exact, as in derivcheck: 1.5708 -> (15708/10000)
+    text = re.sub(r"(\d+)\.(\d+)", lambda m: f"({m.group(1)}{m.group(2)}/1{'0' * len(m.group(2))})", text)
     return parse_expr(text.replace("^", "**"), local_dict=LOCALS, evaluate=False)
 
 
