@@ -6,6 +6,7 @@
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/report.hpp"
+#include "derivations/core/satisfiable.hpp"
 
 namespace dc {
 
@@ -182,10 +183,11 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
     c.op = it.op;
     c.text = it.text;
     c.pos = it.pos;
+    require_possible_assumption(c, static_cast<int>(it.text.size()));
     table.add_constraint(std::move(c));
   }
-  std::string why = check_satisfiable(table);
-  if (!why.empty()) throw InputError(assume_pos, "the assumptions cannot all hold (" + why + ")");
+  Satisfiability sat = decide_satisfiable(table);
+  if (sat.status != Satisfiability::Status::Satisfiable) throw InputError(assume_pos, unsatisfiable_message(sat));
   return table;
 }
 
@@ -266,6 +268,9 @@ struct LineError {
   std::string message;
 };
 
+// The file name given to positions inside a claim's "assume" field.
+const char* const kAssumeField = "<assume field>";
+
 class ClaimLine {
  public:
   ClaimLine(const nlohmann::json& j, int line_no, const std::string& file, const ProveOptions& opt)
@@ -281,6 +286,7 @@ class ClaimLine {
     if (kind == "limit" || kind == "series_first_order") point_node_ = point();
     // symbols: identifiers of all expressions; y, yp, ypp for ODEs
     std::map<std::string, DomainAt> domains = assumptions();
+    std::vector<AssumptionItem> items = assume_items(domains);
     std::vector<const Node*> exprs;
     for (auto& [k, n] : nodes) (void)k, exprs.push_back(&n);
     if (point_node_ && !point_infinite_) exprs.push_back(&*point_node_);
@@ -288,8 +294,10 @@ class ClaimLine {
     if (kind == "solves_ode") initial_nodes = initial_values();
     for (const auto& n : initial_nodes) exprs.push_back(&n);
     try {
-      table_ = claim_table(exprs, domains, {}, SourcePos{file_, line_, 1});
+      table_ = claim_table(exprs, domains, items, SourcePos{file_, line_, 1});
     } catch (const InputError& e) {
+      if (e.pos().file == kAssumeField)
+        throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
       throw LineError{"in 'assumptions': " + e.message()};
     }
     auto conv = [&](const std::string& f) -> ex {
@@ -445,6 +453,31 @@ class ClaimLine {
       }
     }
     return out;
+  }
+
+  // The optional field "assume": an assumption list as for `equal --assume` (domains such as
+  // "x > 0", "e in [0, 1]" and relations such as "x > 1000000", "v1 > v2"). Its domains join
+  // those of "assumptions" (a symbol given two different domains is an error); positions in its
+  // errors are columns inside the field.
+  std::vector<AssumptionItem> assume_items(std::map<std::string, DomainAt>& domains) {
+    if (!j_.contains("assume")) return {};
+    if (!j_.at("assume").is_string()) throw LineError{"field 'assume' must be a string such as \"x > 0, v1 > v2\""};
+    std::string text = j_.at("assume").get<std::string>();
+    std::vector<AssumptionItem> items;
+    try {
+      items = parse_assumptions(text, SourcePos{kAssumeField, line_, 1});
+    } catch (const InputError& e) {
+      throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+    }
+    for (const auto& it : items) {
+      if (it.is_constraint) continue;
+      auto prev = domains.find(it.name);
+      if (prev != domains.end() && prev->second.domain.to_string() != it.domain.to_string())
+        throw LineError{"in field 'assume' (column " + std::to_string(it.pos.col) + "): conflicting assumptions for '" +
+                        it.name + "': " + prev->second.domain.to_string() + " and " + it.domain.to_string()};
+      domains[it.name] = {it.domain, it.pos};
+    }
+    return items;
   }
 
   std::vector<Node> initial_values() {

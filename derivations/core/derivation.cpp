@@ -12,6 +12,7 @@
 
 #include "derivations/core/io.hpp"
 #include "derivations/core/prove.hpp"
+#include "derivations/core/satisfiable.hpp"
 #include "derivations/core/units.hpp"
 
 namespace dc {
@@ -483,15 +484,25 @@ class Reader {
       c.op = ops[i].op;
       c.text = to_text(sides[i]) + " " + s.text.substr(ops[i].at, ops[i].len) + " " + to_text(sides[i + 1]);
       c.pos = sides[i].pos;
+      // underline from the left side to the end of the right side (on one line)
+      const Node& r = sides[i + 1];
+      int length = r.pos.line == c.pos.line ? r.pos.col + r.length - c.pos.col : static_cast<int>(c.text.size());
+      try {
+        require_possible_assumption(c, length);
+      } catch (const InputError& e) {
+        fail(e.pos(), e.message(), e.length());
+      }
       d_.symbols.add_constraint(std::move(c));
     }
   }
 
   void check_assumptions() {
-    std::string why = check_satisfiable(d_.symbols);
-    if (why.empty()) return;
+    Satisfiability sat = decide_satisfiable(d_.symbols);
+    if (sat.status == Satisfiability::Status::Satisfiable) return;
     SourcePos p = first_assume_ ? *first_assume_ : SourcePos{file(), 1, 1};
-    fail(p, "the assumptions cannot all hold (" + why + "); nothing may be derived from a contradiction", 6);
+    std::string why = unsatisfiable_message(sat);
+    if (sat.status == Satisfiability::Status::Unsatisfiable) why += "; nothing may be derived from a contradiction";
+    fail(p, why, 6);
   }
 
   // --- steps -----------------------------------------------------------------------------

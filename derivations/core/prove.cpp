@@ -561,37 +561,6 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
   return out;
 }
 
-// ------------------------------------------------------------------ satisfiability
-
-std::string check_satisfiable(const SymbolTable& ctx, std::uint64_t seed) {
-  for (const auto& s : ctx.all())
-    if (s.domain.empty()) return "the domain '" + s.domain.to_string() + "' of '" + s.name + "' is empty";
-  const auto& cons = ctx.constraints();
-  if (cons.empty()) return "";
-  std::vector<ex> exprs;
-  for (const auto& c : cons) exprs.push_back(c.lhs - c.rhs);
-  d::PointSampler sampler(exprs, ctx);
-  d::Rng rng(seed);
-  std::vector<int> held(cons.size(), 0);
-  const int tries = 2000;
-  for (int i = 0; i < tries; ++i) {
-    bool adm = false;
-    GiNaC::exmap p = sampler.draw(rng, i % 2 == 1, &adm);
-    if (adm) return "";
-    for (std::size_t j = 0; j < cons.size(); ++j)
-      if (cons[j].holds_at(p)) ++held[j];
-  }
-  std::string never, all;
-  for (std::size_t j = 0; j < cons.size(); ++j) {
-    std::string t = "'" + cons[j].text + "'";
-    all += (all.empty() ? "" : ", ") + t;
-    if (held[j] == 0) never += (never.empty() ? "" : ", ") + t;
-  }
-  if (!never.empty())
-    return "the assumption(s) " + never + " never hold on the declared domains (" +
-           std::to_string(tries) + " random points tried)";
-  return "the assumptions " + all + " cannot all hold together: each holds somewhere, but none of " +
-         std::to_string(tries) + " random points from the declared domains satisfies them all";
-}
+// check_satisfiable lives in satisfiable.cpp.
 
 }  // namespace dc

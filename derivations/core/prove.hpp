@@ -56,7 +56,8 @@ void require_defined_on_domain(Verdict& v);
 
 // Do the declared domains and constraints admit at least one point? (An empty set of
 // assumptions would let anything follow.) Returns an empty string when satisfiable (a point
-// was found), otherwise the reason.
+// was found), otherwise the reason. Defined in satisfiable.cpp; decide_satisfiable
+// (satisfiable.hpp) also says whether a negative answer is certain.
 std::string check_satisfiable(const SymbolTable& ctx, std::uint64_t seed = 20261121);
 
 // Guards GiNaC::Digits (a process-wide global) for the lifetime of the guard.

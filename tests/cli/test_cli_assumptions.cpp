@@ -1,0 +1,117 @@
+// CLI behaviour of assumptions (issue 8, item 7): a constant-false assumption is an input error
+// at its position (exit 2) in `equal --assume`, in .dc files and in claims lines; satisfiable
+// assumptions with large values are accepted. Runs the built binary DERIVCHECK_CLI.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+namespace {
+
+std::string src(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/" + rel; }
+
+std::string quote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "'\\''";
+    else out += c;
+  }
+  return out + "'";
+}
+
+struct Run {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+Run run(const std::vector<std::string>& args) {
+  static int counter = 0;
+  std::string errfile = "derivcheck_cli_assume_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(++counter) + ".txt";
+  std::string cmd = quote(DERIVCHECK_CLI);
+  for (const auto& a : args) cmd += " " + quote(a);
+  cmd += " 2>" + errfile;
+  Run r;
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  std::array<char, 4096> buf{};
+  std::size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  int status = pclose(p);
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream e(errfile);
+  std::stringstream ss;
+  ss << e.rdbuf();
+  r.err = ss.str();
+  std::remove(errfile.c_str());
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("equal --assume: a constant-false assumption is exit 2 at its position", "[cli][assumptions]") {
+  struct Case {
+    const char* assume;
+    const char* prefix;
+  };
+  auto c = GENERATE(values<Case>({
+      {"x > x", "<assume>:1:1: error: the assumption 'x > x' can never hold"},
+      {"1 > 2", "<assume>:1:1: error: the assumption '1 > 2' can never hold"},
+      {"x != x", "<assume>:1:1: error: the assumption 'x != x' can never hold"},
+      {"y > 0, x < x - 1", "<assume>:1:8: error: the assumption 'x < x - 1' can never hold"},
+  }));
+  Run r = run({"equal", "x", "x", "--assume", c.assume});
+  CAPTURE(c.assume, r.out, r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.rfind(c.prefix, 0) == 0);
+  CHECK(r.err.find('^') != std::string::npos);
+}
+
+TEST_CASE("equal --assume: constant-true and large-value assumptions are accepted", "[cli][assumptions]") {
+  CHECK(run({"equal", "x", "x", "--assume", "x >= x"}).exit_code == 0);
+  Run big = run({"equal", "sqrt(x^2)", "x", "--assume", "x > 1000000"});
+  CAPTURE(big.out, big.err);
+  CHECK(big.exit_code != 2);   // satisfiable: never "never holds"
+  CHECK(big.exit_code != 1);   // true: never refuted
+  Run imp = run({"equal", "x", "x", "--assume", "x > 5, x < 3"});
+  CHECK(imp.exit_code == 2);
+  CHECK(imp.err.find("cannot all hold") != std::string::npos);
+}
+
+TEST_CASE("check: a constant-false assume in a .dc file is exit 2 at its position", "[cli][assumptions]") {
+  Run r = run({"check", src("tests/data/errors/assume_never.dc")});
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 2);
+  std::string all = r.out + r.err;
+  CHECK(all.find("assume_never.dc:3:8: error: the assumption 'x > x' can never hold") != std::string::npos);
+}
+
+TEST_CASE("claims: a constant-false assume gives that line an error verdict, the others are checked",
+          "[cli][assumptions]") {
+  std::string file = "derivcheck_cli_assume_" + std::to_string(::getpid()) + ".jsonl";
+  {
+    std::ofstream f(file);
+    f << R"J({"id":"never","kind":"equal","lhs":"x","rhs":"x","assume":"x > x"})J" << "\n";
+    f << R"J({"id":"fine","kind":"equal","lhs":"abs(x - y)","rhs":"x - y","assume":"x > y"})J" << "\n";
+  }
+  Run r = run({"claims", file, "--no-timings"});
+  std::remove(file.c_str());
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 2);
+  std::istringstream lines(r.out);
+  std::string never, fine;
+  std::getline(lines, never);
+  std::getline(lines, fine);
+  CHECK(never.rfind(R"({"id":"never",)", 0) == 0);
+  CHECK(never.find(R"("verdict":"error")") != std::string::npos);
+  CHECK(never.find("in field 'assume' (column 1): the assumption 'x > x' can never hold") != std::string::npos);
+  CHECK(fine.rfind(R"({"id":"fine",)", 0) == 0);
+  CHECK((fine.find(R"("verdict":"proved")") != std::string::npos ||
+         fine.find(R"("verdict":"holds_numerically")") != std::string::npos));
+}
