@@ -523,15 +523,10 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
       bool adm = false;
       GiNaC::exmap p = sampler.draw(rng, attempt >= 30, &adm);
       if (!adm) continue;
-      ex val;
-      try {
-        val = rc.arg.subs(p, GiNaC::subs_options::no_pattern);
-      } catch (const std::exception&) {
-        continue;  // the argument itself is undefined here: another condition reports it
-      }
-      // The argument's sign, certified by ball arithmetic (an argument that is itself not
-      // real breaks an inner condition, which reports it).
-      kernel::Ball b = kernel::enclose_sign(val);
+      const ex& val = rc.arg;
+      // The argument's sign at the point, certified by ball arithmetic (an argument that is
+      // itself not real breaks an inner condition, which reports it).
+      kernel::Ball b = kernel::enclose_sign_at(val, &p);
       if (b.status != kernel::BallStatus::Value) continue;
       ++tested;
       bool bad = false;
@@ -540,7 +535,7 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
         case CondKind::Nonzero: bad = b.exact_zero(); break;
         case CondKind::Positive: bad = b.negative() || b.exact_zero(); break;
         case CondKind::Nonnegative: bad = b.negative(); break;
-        case CondKind::UnitInterval: bad = kernel::enclose_sign(GiNaC::abs(val) - 1).positive(); break;
+        case CondKind::UnitInterval: bad = kernel::enclose_sign_at(GiNaC::abs(val) - 1, &p).positive(); break;
       }
       if (bad) {
         violated = true;

@@ -233,25 +233,15 @@ int SymbolTable::function_index(const std::string& name) const {
 }
 
 bool Constraint::holds_at(const GiNaC::exmap& point) const {
-  GiNaC::ex d;
-  try {
-    d = (lhs - rhs).subs(point);
-  } catch (const std::exception&) {
-    return false;  // undefined at this point (division by zero): not admissible
-  }
-  // The sign of lhs - rhs, certified by ball arithmetic (exact for rationals); a point where
-  // it cannot be certified (a difference not separated from 0) is not admissible.
+  // The sign of lhs - rhs at the point, certified by ball arithmetic (exact for rationals; the
+  // point's values are read during the evaluation, never substituted, so no exact power is
+  // expanded); a point where it cannot be certified is not admissible.
   int s;
-  if (GiNaC::is_a<GiNaC::numeric>(d) && GiNaC::ex_to<GiNaC::numeric>(d).is_rational()) {
-    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(d);
-    s = n.is_zero() ? 0 : (n.is_positive() ? 1 : -1);
-  } else {
-    kernel::Ball b = kernel::enclose_sign(d, 128, 1 << 14);
-    if (b.positive()) s = 1;
-    else if (b.negative()) s = -1;
-    else if (b.exact_zero()) s = 0;
-    else return false;
-  }
+  kernel::Ball b = kernel::enclose_sign_at(lhs - rhs, &point, 128, 1 << 14);
+  if (b.positive()) s = 1;
+  else if (b.negative()) s = -1;
+  else if (b.exact_zero()) s = 0;
+  else return false;
   switch (op) {
     case Op::Lt: return s < 0;
     case Op::Le: return s <= 0;

@@ -79,7 +79,7 @@ constexpr long kMaxExpBits = 1L << 26;
 
 class Evaluator {
  public:
-  explicit Evaluator(long prec) : prec_(prec) {}
+  explicit Evaluator(long prec, const GiNaC::exmap* point = nullptr) : prec_(prec), point_(point) {}
   std::string why;
 
   BallStatus eval(const ex& e, arb_t out) {
@@ -110,12 +110,21 @@ class Evaluator {
       return BallStatus::Value;
     }
     if (GiNaC::is_a<GiNaC::function>(e)) return function(e, out);
-    if (GiNaC::is_a<GiNaC::symbol>(e)) return unknown("a symbol without a value");
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+      // the sample point's value, read here rather than substituted: GiNaC would evaluate
+      // (1 + 1/x)^x exactly at x = 10^29/7 and never finish
+      if (point_) {
+        auto it = point_->find(e);
+        if (it != point_->end()) return eval(it->second, out);
+      }
+      return unknown("a symbol without a value");
+    }
     return unknown("an expression that is not a number");
   }
 
  private:
   long prec_;
+  const GiNaC::exmap* point_;
 
   struct Tmp {
     arb_t v;
@@ -424,13 +433,15 @@ long bits_to_digits(long bits) { return static_cast<long>(bits / 3.3219280948873
 
 }  // namespace
 
-Ball enclose(const ex& constant, long prec_bits) {
+Ball enclose(const ex& constant, long prec_bits) { return enclose_at(constant, nullptr, prec_bits); }
+
+Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) {
   Ball b;
   b.prec_bits = prec_bits;
-  Evaluator ev(prec_bits);
+  Evaluator ev(prec_bits, point);
   try {
-    b.status = ev.eval(constant, b.impl->v);
-  } catch (const std::exception& e) {
+    b.status = ev.eval(e, b.impl->v);
+  } catch (const std::exception&) {
     b.status = BallStatus::Unknown;
     ev.why = "evaluation failed";
   }
@@ -439,8 +450,12 @@ Ball enclose(const ex& constant, long prec_bits) {
 }
 
 Ball enclose_sign(const ex& constant, long start_bits, long max_bits) {
+  return enclose_sign_at(constant, nullptr, start_bits, max_bits);
+}
+
+Ball enclose_sign_at(const ex& constant, const GiNaC::exmap* point, long start_bits, long max_bits) {
   for (long p = std::max(32L, start_bits);; p *= 4) {
-    Ball b = enclose(constant, std::min(p, max_bits));
+    Ball b = enclose_at(constant, point, std::min(p, max_bits));
     bool decided = b.status == BallStatus::NotReal || b.status == BallStatus::Pole ||
                    (b.status == BallStatus::Value &&
                     (arb_is_positive(b.impl->v) || arb_is_negative(b.impl->v) || arb_is_zero(b.impl->v)));
@@ -545,11 +560,15 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
 }
 
 PointComparison compare_constants(const ex& lhs, const ex& rhs, const CompareOptions& opt) {
+  return compare_at(lhs, rhs, nullptr, opt);
+}
+
+PointComparison compare_at(const ex& lhs, const ex& rhs, const GiNaC::exmap* point, const CompareOptions& opt) {
   using K = PointComparison::Kind;
   PointComparison out;
   for (long digits = std::max(opt.start_digits, -opt.tol_exponent + 15);; digits *= 4) {
     long prec = std::min(digits_to_bits(digits), opt.max_bits);
-    Ball l = enclose(lhs, prec), r = enclose(rhs, prec);
+    Ball l = enclose_at(lhs, point, prec), r = enclose_at(rhs, point, prec);
     out = compare_balls(l, r, opt.tol_exponent, opt.sig);
     out.digits = prec < opt.max_bits ? digits : bits_to_digits(prec);
     if (out.kind != K::Unknown) return out;

@@ -55,11 +55,15 @@ class Ball {
 
 // Enclose the value of a constant expression at `prec_bits` of working precision.
 Ball enclose(const GiNaC::ex& constant, long prec_bits);
+// The same at a point: symbols take their values from `point` (exact rationals) during the
+// evaluation, without GiNaC's substitution (which evaluates exact powers eagerly).
+Ball enclose_at(const GiNaC::ex& e, const GiNaC::exmap* point, long prec_bits);
 
 // Enclose with precision raised (doubling from `start_bits`) until the ball decides `want`
 // or `max_bits` is reached. `want`: the sign is known (Value that is positive, negative or
 // exactly zero), or any certified status (NotReal / Pole).
 Ball enclose_sign(const GiNaC::ex& constant, long start_bits = 128, long max_bits = 1 << 16);
+Ball enclose_sign_at(const GiNaC::ex& e, const GiNaC::exmap* point, long start_bits = 128, long max_bits = 1 << 16);
 
 // The outcome of comparing two sides at one point.
 struct PointComparison {
@@ -92,5 +96,8 @@ PointComparison compare_balls(const Ball& lhs, const Ball& rhs, long tol_exponen
 // Compare two constant expressions (a sample point already substituted), raising the
 // precision until the comparison is decided or the cap is reached.
 PointComparison compare_constants(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const CompareOptions& opt = {});
+// The same with the symbols' values read from `point`.
+PointComparison compare_at(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::exmap* point,
+                           const CompareOptions& opt = {});
 
 }  // namespace dc::kernel

@@ -168,12 +168,18 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       continue;
     }
     std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
-    Substituted s = substitute_point(lhs, rhs, p, abstract, fseed);
-    if (!s.ok) {
-      ++undefined;
-      continue;
+    PointComparison c;
+    if (abstract) {
+      // abstract applications get their random values from their (substituted) arguments
+      Substituted s = substitute_point(lhs, rhs, p, abstract, fseed);
+      if (!s.ok) {
+        ++undefined;
+        continue;
+      }
+      c = compare_constants(s.l, s.r, co);
+    } else {
+      c = compare_at(lhs, rhs, &p, co);
     }
-    PointComparison c = compare_constants(s.l, s.r, co);
     if (c.kind == K::Agree) {
       ++agreed;
       max_rel = std::max(max_rel, c.rel_diff);
@@ -254,9 +260,14 @@ std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTabl
     bool admissible = false;
     GiNaC::exmap p = sampler.draw(rng, attempt % 3, &admissible);
     if (!admissible) continue;
-    Substituted s = substitute_point(lhs, rhs, p, abstract, opt.seed + 977 * (attempt + 1));
-    if (!s.ok) continue;
-    PointComparison c = compare_constants(s.l, s.r, co);
+    PointComparison c;
+    if (abstract) {
+      Substituted s = substitute_point(lhs, rhs, p, abstract, opt.seed + 977 * (attempt + 1));
+      if (!s.ok) continue;
+      c = compare_constants(s.l, s.r, co);
+    } else {
+      c = compare_at(lhs, rhs, &p, co);
+    }
     if (certified_counterexample(c))
       return "at " + d::join_point(sampler.describe(p)) + ": " + difference_text(c);
     if (c.kind == PointComparison::Kind::Agree) return "";
