@@ -19,6 +19,7 @@ struct StepResult {
   std::vector<InputError> errors;   // dimension mismatches, undefined symbols (erratum), ...
   bool erratum_reported = false;    // the printed claim's error was reported; corrected form checked
   bool premise = false;             // rule given/definition: a premise, checked only for symbols and dimensions
+  bool input_error = false;         // the step's input cannot be used (contradictory references): exit code 2
   double seconds = 0;
 };
 
