@@ -449,7 +449,7 @@ class Checker {
     collect_symbol_powers(num, fns);
     for (const auto& f : fns)
       if (pool_function_index(f) < 0) consider(f, true);
-    std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+    std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
       return a.score != b.score ? a.score > b.score : a.key < b.key;
     });
     return out;
