@@ -149,7 +149,7 @@ int Totals::exit_code(bool strict) const {
 Totals totals(const std::vector<FileReport>& files) {
   Totals t;
   for (const auto& f : files) {
-    if (f.input_error) ++t.input_errors;
+    if (f.input_error || f.summary.input_errors > 0) ++t.input_errors;
     t.steps += static_cast<int>(f.summary.results.size());
     t.premises += f.summary.premises;
     t.proved += f.summary.proved;

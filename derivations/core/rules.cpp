@@ -18,6 +18,7 @@
 #include "derivations/core/functions.hpp"
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
 #include "derivations/core/units.hpp"
 
 namespace dc {
@@ -27,8 +28,10 @@ namespace {
 using GiNaC::ex;
 
 // Thrown inside a rule when the step cannot be checked as written (reported as an error).
+// input: the input itself is unusable (references that contradict each other): exit code 2.
 struct StepError {
   InputError error;
+  bool input = false;
 };
 
 InputError positioned(const Derivation& d, const SourcePos& p, const std::string& msg, int len = 1) {
@@ -122,6 +125,29 @@ void collect_symbols(const ex& e, std::vector<ex>& out) {
   for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
 }
 
+// No symbol and no abstract application: a constant (possibly irrational: pi - 3).
+bool free_of_unknowns(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0) return false;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (!free_of_unknowns(e.op(i))) return false;
+  return true;
+}
+
+// A rational function of symbols with exact coefficients (pi allowed: it is transcendental).
+// Such an expression is identically zero exactly when normal() makes it 0.
+bool rational_function(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e)) return true;
+  if (GiNaC::is_a<GiNaC::numeric>(e)) return GiNaC::ex_to<GiNaC::numeric>(e).is_crational();
+  if (GiNaC::is_a<GiNaC::constant>(e)) return e.is_equal(GiNaC::Pi);
+  if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!rational_function(e.op(i))) return false;
+    return true;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e)) return e.op(1).info(GiNaC::info_flags::integer) && rational_function(e.op(0));
+  return false;
+}
+
 bool has_any(const ex& e, const std::vector<ex>& syms) {
   for (const auto& s : syms)
     if (e.has(s)) return true;
@@ -132,7 +158,8 @@ bool has_any(const ex& e, const std::vector<ex>& syms) {
 struct Eq {
   ex e;
   ex hint;
-  std::string from;   // label, for messages
+  std::string from;                // label, for messages
+  std::vector<std::string> also;   // further references it rests on (substitutions applied to it)
 };
 
 class Checker {
@@ -213,9 +240,12 @@ class Checker {
   }
 
   // Substitutions `x = value` (inline or a label `x = expr`), applied in order.
-  std::vector<std::pair<ex, ex>> substitutions(const std::vector<RuleArg>& args, std::vector<Eq>* rest) const {
+  // labels (optional): the label of each substitution, for messages.
+  std::vector<std::pair<ex, ex>> substitutions(const std::vector<RuleArg>& args, std::vector<Eq>* rest,
+                                               std::vector<std::string>* labels = nullptr) const {
     std::vector<std::pair<ex, ex>> out;
     for (const auto& a : args) {
+      std::size_t n = out.size();
       const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
       if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
       ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
@@ -227,28 +257,69 @@ class Checker {
       else if (substitutable(rhs) && !lhs.has(rhs)) out.push_back({rhs, lhs});
       else if (rest) rest->push_back({lhs - rhs, ex(), a.label});
       else fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
+      if (labels && out.size() > n) labels->push_back(a.label);
     }
     return out;
   }
+
+  // Apply substitutions to an equation, recording the ones that changed it as references it
+  // rests on.
+  static void apply_to(Eq& q, const std::vector<std::pair<ex, ex>>& subs, const std::vector<std::string>& labels) {
+    std::vector<bool> used;
+    q.e = apply(q.e, subs, &used);
+    for (std::size_t i = 0; i < used.size(); ++i)
+      if (used[i]) q.also.push_back(labels[i]);
+  }
   // Substitutions are applied repeatedly until nothing changes (so they may be given in any
   // order); a cycle x = y, y = x stops after a fixed number of rounds.
-  static ex apply(ex e, const std::vector<std::pair<ex, ex>>& subs) {
+  // `used` (optional, one flag per substitution) records which substitutions changed something.
+  static ex apply(ex e, const std::vector<std::pair<ex, ex>>& subs, std::vector<bool>* used = nullptr) {
+    if (used) used->resize(subs.size(), false);
     for (int round = 0; round < 16; ++round) {
       ex before = e;
-      for (const auto& [from, to] : subs) e = e.subs(from == to, GiNaC::subs_options::no_pattern);
+      for (std::size_t i = 0; i < subs.size(); ++i) {
+        ex next = e.subs(subs[i].first == subs[i].second, GiNaC::subs_options::no_pattern);
+        if (used && !next.is_equal(e)) (*used)[i] = true;
+        e = next;
+      }
       if (e.is_equal(before)) break;   // structural: only to detect a fixed point
     }
     return e;
   }
 
   // --- elimination ------------------------------------------------------------------
-  struct Reduction {
-    std::vector<std::pair<ex, ex>> eliminated;  // atomized (var, value); var may be sin(theta)
-    std::vector<ex> function_atoms;             // eliminated applications such as sin(theta)
-    std::vector<ex> leftover;                   // equations with nothing eliminable (atomized, reduced)
-    int vanished = 0;                           // equations that reduced to 0 identically
-    bool resource_limit = false;
+  // Eliminating x with an equation c*x + r = 0 replaces x by -r/c everywhere. That division is
+  // only allowed when c is not identically zero: u*log(a*b) = u*log(a) + u*log(b) holds for every
+  // u (a, b positive), and dividing by its coefficient log(a*b) - log(a) - log(b) would "derive"
+  // u = 0, from which false claims follow.
+  struct Elimination {
+    ex var;            // atomized: a symbol, an abstract application's stand-in, sin(theta), omega^2
+    ex value;          // var = value in the quantities not eliminated (kept fully substituted)
+    ex coef;           // the coefficient divided by, with later eliminations substituted as in value
+    ex coef_checked;   // the coefficient when it was shown not to be identically zero
+    bool function_atom = false;   // sin(theta), omega^2: a function of symbols that remain
+    int equation = -1;            // index of the equation it was eliminated with
+    std::string key;              // deterministic text of var
+    std::vector<int> sources;     // every equation the value rests on (for messages)
   };
+  struct Leftover {
+    ex e;                         // atomized, reduced; nothing in it could be eliminated
+    std::vector<int> sources;
+    std::vector<ex> used;         // the eliminated atoms substituted into it
+  };
+  struct Reduction {
+    std::vector<Elimination> eliminated;
+    std::vector<Leftover> leftover;
+    int vanished = 0;             // equations that reduced to 0 identically
+    bool resource_limit = false;
+    bool degenerate = false;      // no elimination order with nonzero coefficients was found
+  };
+
+  static void merge_sources(std::vector<int>& into, const std::vector<int>& from) {
+    into.insert(into.end(), from.begin(), from.end());
+    std::sort(into.begin(), into.end());
+    into.erase(std::unique(into.begin(), into.end()), into.end());
+  }
 
   int declaration_index(const ex& s) const {
     int i = 0;
@@ -308,111 +379,405 @@ class Checker {
     return true;
   }
 
-  Reduction reduce(std::vector<Eq> eqs, const ex& target, const std::vector<ex>& preferred,
-                   bool only_preferred) {
+  // Is the coefficient of an elimination not identically zero on the declared domain? Exact
+  // tests first (a nonzero number, a sign the domains make evident, a rational function whose
+  // normal form is not 0); otherwise the probe must find a point where it is nonzero (prove_zero
+  // refutes it). Identically zero, "holds numerically" and undecided all forbid the division.
+  bool nonzero_coefficient(const ex& coef) {
+    if (GiNaC::is_a<GiNaC::numeric>(coef)) return !coef.is_zero();
+    auto it = nonzero_cache_.find(coef);
+    if (it != nonzero_cache_.end()) return it->second;
+    bool nonzero;
+    ex c = atoms_.restore(coef);
+    if (detail::provably_nonzero(c, d_.symbols)) {
+      nonzero = true;
+    } else if (rational_function(coef)) {
+      // Atoms stand for independent quantities; a nonzero rational function of independent
+      // quantities is nonzero on any open set, so its normal form decides.
+      try {
+        nonzero = !GiNaC::normal(coef).is_zero();
+      } catch (const std::exception&) {
+        nonzero = false;
+      }
+    } else {
+      nonzero = prove_zero(c, d_.symbols, opt_).kind == VerdictKind::Refuted;
+    }
+    nonzero_cache_.emplace(coef, nonzero);
+    return nonzero;
+  }
+  std::map<ex, bool, GiNaC::ex_is_less> nonzero_cache_;
+
+  // An atom that an equation determines linearly, and how much the rules prefer it.
+  struct Candidate {
+    long score = 0;
+    std::string key;   // deterministic text: breaks ties (GiNaC's traversal order varies by process)
+    ex var, value, coef;
+    bool is_function = false;
+  };
+
+  // Every atom of `num` that it determines linearly, best first: the rule's unknowns, symbols
+  // before applications such as sin(theta), atoms of the claim, the symbol written alone on the
+  // reference's left, real-domain symbols, numeric coefficients, then declaration order and text.
+  std::vector<Candidate> candidates(const ex& num, const ex& hint, const ex& target, const std::vector<ex>& preferred,
+                                    bool only_preferred) {
+    std::vector<Candidate> out;
+    auto consider = [&](const ex& c, bool is_function) {
+      bool pref = false;
+      for (const auto& p : preferred)
+        if (p.is_equal(c) || atoms_(p).is_equal(c)) pref = true;
+      if (only_preferred && !pref) return;
+      Candidate k;
+      if (!linear_in(num, c, k.coef, k.value)) return;
+      long score = 0;
+      if (pref) score += 1000;
+      if (!is_function) score += 500;
+      if (target.has(c)) score += 100;
+      if (hint.is_equal(c)) score += 50;
+      if (is_function || real_domain(c)) score += 20;
+      if (GiNaC::is_a<GiNaC::numeric>(k.coef)) score += 10;
+      k.score = score * 100 + std::max(0, declaration_index(c)) % 100;
+      k.key = text(atoms_.restore(c));
+      k.var = c;
+      k.is_function = is_function;
+      out.push_back(std::move(k));
+    };
+    std::vector<ex> syms;
+    collect_symbols(num, syms);
+    for (const auto& c : syms) consider(c, false);
+    std::vector<ex> fns;
+    collect_functions(num, fns);
+    collect_symbol_powers(num, fns);
+    for (const auto& f : fns)
+      if (pool_function_index(f) < 0) consider(f, true);
+    std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+      return a.score != b.score ? a.score > b.score : a.key < b.key;
+    });
+    return out;
+  }
+
+  // Gaussian elimination, one atom per equation. An elimination whose coefficient turns out to
+  // vanish identically once later equations are used (c*u = 0, then c = 0) was not allowed: the
+  // reduction is redone without that choice.
+  using Bans = std::set<std::pair<int, std::string>>;   // (equation, atom) choices that may not be used
+  Reduction reduce(const std::vector<Eq>& eqs, const ex& target, const std::vector<ex>& preferred,
+                   bool only_preferred, Bans banned = {}) {
+    Reduction red;
+    for (int attempt = 0; attempt < 8; ++attempt) {
+      red = reduce_once(eqs, target, preferred, only_preferred, banned);
+      const Elimination* bad = vanishing_elimination(red);
+      if (!bad) return red;
+      banned.insert({bad->equation, bad->key});
+    }
+    red.degenerate = true;
+    return red;
+  }
+
+  // The first elimination whose coefficient, with the later eliminations substituted, is
+  // identically zero (nullptr if none).
+  const Elimination* vanishing_elimination(const Reduction& red) {
+    for (const auto& el : red.eliminated)
+      if (!el.coef.is_equal(el.coef_checked) && !nonzero_coefficient(el.coef)) return &el;
+    return nullptr;
+  }
+
+  Reduction reduce_once(const std::vector<Eq>& eqs, const ex& target, const std::vector<ex>& preferred,
+                        bool only_preferred, const Bans& banned) {
     Reduction red;
     ex t = atoms_(target);
     // Work list: an equation with nothing to eliminate is retried after later eliminations
     // (v1 eliminated by a later reference makes dh = v1^2/(2 g) usable).
-    std::vector<Eq> pending = std::move(eqs);
+    std::vector<int> pending(eqs.size());
+    for (std::size_t i = 0; i < eqs.size(); ++i) pending[i] = static_cast<int>(i);
     for (int pass = 0; pass < 8 && !pending.empty(); ++pass) {
-    std::size_t before = red.eliminated.size();
-    std::vector<Eq> retry;
-    red.leftover.clear();
-    for (auto& q : pending) {
-      ex e = atoms_(q.e);
-      for (const auto& [v, val] : red.eliminated) e = e.subs(v == val, GiNaC::subs_options::no_pattern);
-      if (estimate_expanded_terms(e) > static_cast<double>(opt_.max_terms)) {
-        red.resource_limit = true;
-        continue;
-      }
-      ex num;
-      try {
-        num = GiNaC::numer(GiNaC::normal(e)).expand();
-      } catch (const std::exception&) {
-        red.resource_limit = true;
-        continue;
-      }
-      if (num.is_zero()) {
-        ++red.vanished;
-        continue;
-      }
-      std::vector<ex> cands;
-      collect_symbols(num, cands);
-      ex hint = atoms_(q.hint);
-      long best_score = -1;
-      std::string best_key;
-      ex best, best_value;
-      bool best_is_function = false;
-      auto consider = [&](const ex& c, bool is_function) {
-        bool pref = false;
-        for (const auto& p : preferred)
-          if (p.is_equal(c) || atoms_(p).is_equal(c)) pref = true;
-        if (only_preferred && !pref) return;
-        ex coef, value;
-        if (!linear_in(num, c, coef, value)) return;
-        long score = 0;
-        if (pref) score += 1000;
-        if (!is_function) score += 500;   // symbols before applications such as sin(theta)
-        if (t.has(c)) score += 100;
-        if (hint.is_equal(c)) score += 50;
-        if (is_function || real_domain(c)) score += 20;
-        if (GiNaC::is_a<GiNaC::numeric>(coef)) score += 10;
-        score = score * 100 + std::max(0, declaration_index(c)) % 100;
-        // Ties are broken by the deterministic text of the candidate: GiNaC's traversal
-        // order (and so the order of `cands`) changes from process to process.
-        std::string key = text(atoms_.restore(c));
-        if (score > best_score || (score == best_score && key < best_key)) {
-          best_key = key;
-          best_score = score;
-          best = c;
-          best_value = value;
-          best_is_function = is_function;
+      std::size_t before = red.eliminated.size();
+      std::vector<int> retry;
+      red.leftover.clear();
+      for (int idx : pending) {
+        std::vector<int> sources{idx};
+        std::vector<ex> used;
+        ex e = atoms_(eqs[idx].e);
+        for (const auto& el : red.eliminated) {
+          if (!e.has(el.var)) continue;
+          e = e.subs(el.var == el.value, GiNaC::subs_options::no_pattern);
+          merge_sources(sources, el.sources);
+          used.push_back(el.var);
         }
-      };
-      for (const auto& c : cands) consider(c, false);
-      std::vector<ex> fns;
-      collect_functions(num, fns);
-      collect_symbol_powers(num, fns);
-      for (const auto& f : fns)
-        if (pool_function_index(f) < 0) consider(f, true);
-      if (best_score < 0) {
-        red.leftover.push_back(num);
-        retry.push_back(q);
-        continue;
+        if (estimate_expanded_terms(e) > static_cast<double>(opt_.max_terms)) {
+          red.resource_limit = true;
+          continue;
+        }
+        ex num;
+        try {
+          num = GiNaC::numer(GiNaC::normal(e)).expand();
+        } catch (const std::exception&) {
+          red.resource_limit = true;
+          continue;
+        }
+        if (num.is_zero()) {
+          ++red.vanished;
+          continue;
+        }
+        const Candidate* pick = nullptr;
+        std::vector<Candidate> cands = candidates(num, atoms_(eqs[idx].hint), t, preferred, only_preferred);
+        for (const auto& c : cands) {
+          if (banned.count({idx, c.key}) || !nonzero_coefficient(c.coef)) continue;
+          pick = &c;
+          break;
+        }
+        if (!pick) {
+          red.leftover.push_back({num, sources, used});
+          retry.push_back(idx);
+          continue;
+        }
+        for (auto& el : red.eliminated) {
+          if (!el.value.has(pick->var) && !el.coef.has(pick->var)) continue;
+          el.value = el.value.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
+          el.coef = el.coef.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
+          merge_sources(el.sources, sources);
+        }
+        red.eliminated.push_back({pick->var, pick->value, pick->coef, pick->coef, pick->is_function, idx, pick->key,
+                                  sources});
+        t = t.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
       }
-      for (auto& [v, val] : red.eliminated) val = val.subs(best == best_value, GiNaC::subs_options::no_pattern);
-      red.eliminated.push_back({best, best_value});
-      if (best_is_function) red.function_atoms.push_back(best);
-      t = t.subs(best == best_value, GiNaC::subs_options::no_pattern);
-    }
-    pending = std::move(retry);
-    if (red.eliminated.size() == before) break;
+      pending = std::move(retry);
+      if (red.eliminated.size() == before) break;
     }
     return red;
   }
 
   ex reduced(const ex& e, const Reduction& red) {
     ex r = atoms_(e);
-    for (const auto& [v, val] : red.eliminated) r = r.subs(v == val, GiNaC::subs_options::no_pattern);
+    for (const auto& el : red.eliminated) r = r.subs(el.var == el.value, GiNaC::subs_options::no_pattern);
     return atoms_.restore(r);
-  }
-
-  // After eliminating sin(theta), a counterexample in the remaining variables is only a real
-  // one when theta itself no longer appears (otherwise the point may violate the equation).
-  bool dependent(const Reduction& red, const ex& residual) const {
-    for (const auto& f : red.function_atoms) {
-      std::vector<ex> syms;
-      collect_symbols(f, syms);
-      if (has_any(residual, syms)) return true;
-    }
-    return false;
   }
 
   std::string eliminated_text(const Reduction& red) const {
     std::string out;
-    for (const auto& [v, val] : red.eliminated) out += (out.empty() ? "" : ", ") + text(atoms_.restore(v));
+    for (const auto& el : red.eliminated) out += (out.empty() ? "" : ", ") + text(atoms_.restore(el.var));
     return out;
+  }
+
+  // "reference 'a1'" / "references 'a1' and 'a2'" / "references 'e1', 'e2' and 'e3'", in the
+  // order the rule lists them.
+  static std::vector<std::string> source_labels(const std::vector<int>& sources, const std::vector<Eq>& eqs) {
+    std::vector<int> idx = sources;
+    std::sort(idx.begin(), idx.end());
+    std::vector<std::string> out;
+    auto add = [&](const std::string& l) {
+      if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
+    };
+    for (int i : idx) {
+      add(eqs[i].from);
+      for (const auto& l : eqs[i].also) add(l);
+    }
+    return out;
+  }
+  static std::string quoted_list(const std::vector<std::string>& labels) {
+    std::string out;
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      out += (i == 0 ? "" : i + 1 == labels.size() ? " and " : ", ") + ("'" + labels[i] + "'");
+    return out;
+  }
+  static std::string reference_names(const std::vector<int>& sources, const std::vector<Eq>& eqs) {
+    std::vector<std::string> labels = source_labels(sources, eqs);
+    return (labels.size() == 1 ? "reference " : "references ") + quoted_list(labels);
+  }
+
+  // The rule argument that names a label (for error positions); the rule itself otherwise.
+  std::pair<SourcePos, int> argument_position(const std::string& label) const {
+    for (const auto* group : {&rule().refs, &rule().into, &rule().with})
+      for (const auto& a : *group)
+        if (a.label == label) return {a.pos, a.length};
+    return {rule().pos, 2};
+  }
+
+  // References whose equations reduce to a nonzero constant (a = 1 and a = 2 leave -1 = 0) have
+  // no common solution, and anything would follow from them: an input error naming them, never
+  // a premise of a proof. (Only for equations of references, never for a claim substituted
+  // back, which is simply refuted.)
+  void reject_contradictions(const Reduction& red, const std::vector<Eq>& eqs) {
+    for (const auto& l : red.leftover) {
+      ex e = atoms_.restore(l.e);
+      if (!free_of_unknowns(e)) continue;
+      bool contradiction = GiNaC::is_a<GiNaC::numeric>(e)
+                               ? !e.is_zero()
+                               : prove_zero(e, d_.symbols, opt_).kind == VerdictKind::Refuted;
+      if (!contradiction) continue;
+      std::vector<std::string> labels = source_labels(l.sources, eqs);
+      std::string msg = labels.size() == 1
+                            ? "the reference '" + labels[0] + "' contradicts itself: it leaves " + text(e) + " = 0"
+                            : "the references " + quoted_list(labels) + " contradict each other: together they leave " +
+                                  text(e) + " = 0";
+      if (!l.used.empty()) {
+        std::string names;
+        for (const auto& u : l.used) names += (names.empty() ? "" : ", ") + text(atoms_.restore(u));
+        msg += " (after eliminating " + names + ")";
+      }
+      auto [pos, len] = argument_position(labels.back());
+      throw StepError{positioned(d_, pos, msg, len), true};
+    }
+  }
+
+  // The counterexample of a Verdict as exact values of the declared symbols (false when a name
+  // or value cannot be read back).
+  bool point_values(const Verdict& v, GiNaC::exmap& out) const {
+    for (const auto& [name, value] : v.point) {
+      const SymbolInfo* info = d_.symbols.find(name);
+      if (!info || info->is_function) return false;
+      try {
+        GiNaC::parser reader;
+        ex x = reader(value);
+        if (!free_of_unknowns(x)) return false;
+        out[info->sym] = x;
+      } catch (const std::exception&) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // Is `value` (the symbol's value at the counterexample) inside the declared domain of the
+  // symbol `s`? "" when it is, otherwise why not (`formula`: the value before the point was
+  // substituted, for the message).
+  std::string domain_gap(const ex& s, const ex& value, const ex& formula) const {
+    const SymbolInfo* info = d_.symbols.find(GiNaC::ex_to<GiNaC::symbol>(s));
+    if (!info) return "";
+    const Domain& dom = info->domain;
+    if (!free_of_unknowns(value)) {
+      if (dom.kind == Domain::Kind::Real) return "";   // any real value of what remains will do
+      return "need not keep " + info->name + " " + dom.to_string() + " (" + info->name + " = " + text(formula) + ")";
+    }
+    detail::RealValue rv = detail::eval_real(value, 60);
+    if (!rv.ok) return "gives " + info->name + " = " + text(value) + ", which is " + rv.why;
+    bool inside = dom.contains(rv.value);
+    if (!rv.exact) {
+      // an approximation: inside only when it is clearly away from the bounds
+      GiNaC::numeric tiny = GiNaC::numeric(1, 10).power(40);
+      inside = inside && dom.contains(rv.value * (1 + tiny)) && dom.contains(rv.value * (1 - tiny));
+    }
+    if (inside) return "";
+    return "gives " + info->name + " = " + text(value) + ", outside its domain (" + dom.to_string() + ")";
+  }
+
+  // Why a point is not (shown to be) a counterexample; `elimination` is the elimination at fault
+  // when another choice of eliminated atom may avoid the problem.
+  struct Gap {
+    std::string why;                     // "" when the point satisfies the references
+    const Elimination* elimination = nullptr;
+  };
+
+  // A refutation found on the reduced sides is a counterexample to the step only when the point,
+  // extended by the eliminated quantities computed from it, satisfies the references: every
+  // leftover equation holds there (or is an identity), no coefficient that was divided by
+  // vanishes there, an eliminated application such as sin(theta) equals the value the references
+  // give it, and eliminated symbols stay inside their declared domains and the assumptions.
+  // Quantities that neither the point nor the eliminations fix (m1 in m2 = m1 when the claim
+  // only involves v1, v2) do not affect the claim: any admissible value will do, so a few are
+  // drawn from their domains until one satisfies everything.
+  // Returns an empty gap when a full point is found, otherwise the first gap.
+  Gap counterexample_gap(const Reduction& red, const std::vector<Eq>& eqs, const Verdict& v) {
+    GiNaC::exmap P;
+    if (!point_values(v, P)) return {"the counterexample cannot be checked against the references"};
+    std::vector<const Leftover*> constraining;   // leftovers that are not identities
+    std::vector<ex> involved;                    // what the checks evaluate
+    for (const auto& l : red.leftover) {
+      ex L = atoms_.restore(l.e);
+      if (prove_zero(L, d_.symbols, opt_).holds()) continue;   // an identity constrains nothing
+      constraining.push_back(&l);
+      involved.push_back(L);
+    }
+    for (const auto& el : red.eliminated) {
+      involved.push_back(atoms_.restore(el.value));
+      involved.push_back(atoms_.restore(el.coef));
+      if (el.function_atom) involved.push_back(atoms_.restore(el.var));
+    }
+    std::vector<ex> free;   // symbols left open by the point and the eliminations
+    for (const auto& e : involved) collect_symbols(e, free);
+    free.erase(std::remove_if(free.begin(), free.end(),
+                              [&](const ex& s) {
+                                if (P.count(s)) return true;
+                                for (const auto& el : red.eliminated)
+                                  if (atoms_.restore(el.var).is_equal(s)) return true;
+                                return false;
+                              }),
+               free.end());
+    std::sort(free.begin(), free.end(), [&](const ex& x, const ex& y) { return text(x) < text(y); });
+    Gap first;
+    const int draws = free.empty() ? 1 : 8;
+    for (int k = 0; k < draws; ++k) {
+      GiNaC::exmap Q = P;
+      detail::Rng rng(opt_.seed + 0x51ED270B7u * static_cast<std::uint64_t>(k + 1));
+      for (const auto& s : free) Q[s] = detail::sample_value(detail::domain_of(s, d_.symbols), rng, false);
+      Gap g = gap_at(red, eqs, constraining, Q, free);
+      if (g.why.empty()) return g;
+      if (k == 0) first = g;
+    }
+    return first;
+  }
+
+  // The checks of counterexample_gap at one full point Q (the counterexample plus values for the
+  // free quantities `completed`).
+  Gap gap_at(const Reduction& red, const std::vector<Eq>& eqs, const std::vector<const Leftover*>& constraining,
+             GiNaC::exmap Q, const std::vector<ex>& completed) {
+    try {
+      for (const Leftover* l : constraining) {
+        ex L = atoms_.restore(l->e);
+        ex at = L.subs(Q, GiNaC::subs_options::no_pattern);
+        if (!free_of_unknowns(at))
+          return {"the counterexample need not satisfy " + reference_names(l->sources, eqs) + " (" + text(L) +
+                  " = 0, which determines nothing linearly, is not fixed by the point)"};
+        if (!prove_zero(at, d_.symbols, opt_).holds())
+          return {"the counterexample does not satisfy " + reference_names(l->sources, eqs) + " (" + text(L) + " = 0)"};
+      }
+      const GiNaC::exmap open = Q;   // the values the eliminated quantities are computed from
+      std::vector<ex> assigned = completed;
+      for (const auto& el : red.eliminated) {
+        ex var = atoms_.restore(el.var);
+        ex value = atoms_.restore(el.value).subs(open, GiNaC::subs_options::no_pattern);
+        ex coef = atoms_.restore(el.coef).subs(open, GiNaC::subs_options::no_pattern);
+        bool coef_ok = free_of_unknowns(coef) ? (GiNaC::is_a<GiNaC::numeric>(coef)
+                                                     ? !coef.is_zero()
+                                                     : prove_zero(coef, d_.symbols, opt_).kind == VerdictKind::Refuted)
+                                              : nonzero_coefficient(atoms_(coef));
+        if (!coef_ok)
+          return {"the counterexample need not satisfy " + reference_names(el.sources, eqs) + " (" + text(var) +
+                      " was obtained by dividing by " + text(atoms_.restore(el.coef)) + ", which vanishes there)",
+                  &el};
+        if (GiNaC::is_a<GiNaC::symbol>(var) && d_.symbols.find(GiNaC::ex_to<GiNaC::symbol>(var))) {
+          std::string gap = domain_gap(var, value, atoms_.restore(el.value));
+          if (!gap.empty()) return {"the counterexample " + gap + " by " + reference_names(el.sources, eqs), &el};
+          Q[var] = value;
+          assigned.push_back(var);
+        } else if (el.function_atom) {
+          ex at = var.subs(open, GiNaC::subs_options::no_pattern);
+          if (!free_of_unknowns(at) || !free_of_unknowns(value) || !prove_equal(at, value, d_.symbols, opt_).holds())
+            return {"the counterexample need not satisfy " + reference_names(el.sources, eqs) + " (it gives " +
+                        text(var) + " = " + text(atoms_.restore(el.value)) + ")",
+                    &el};
+        }
+      }
+      for (const auto& c : d_.symbols.constraints()) {
+        bool touched = false;
+        for (const auto& s : assigned) touched = touched || c.lhs.has(s) || c.rhs.has(s);
+        if (touched && !c.holds_at(Q))
+          return {"the counterexample need not satisfy the assumption " + c.text +
+                  " once the quantities the references determine are computed from it"};
+      }
+    } catch (const std::exception&) {
+      return {"the references are undefined at the counterexample"};
+    }
+    return {};
+  }
+
+  // Does e contain an application y(s) (or a derivative of one) of a declared function at s? An
+  // equation with one holds for every value of s (y(t) = F0*t), so it may be used at other
+  // values of s. An equation between plain symbols (y = F0*t with y a symbol) is one value:
+  // instantiating it at two points would give y = F0*t1 and y = 0, from which anything follows.
+  static bool has_application_at(const ex& e, const ex& s) {
+    if (pool_function_index(e) >= 0 && e.nops() >= 1 && e.op(0).is_equal(s)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (has_application_at(e.op(i), s)) return true;
+    return false;
   }
 
   static void application_args(const ex& e, std::vector<ex>& out) {
@@ -426,7 +791,8 @@ class Checker {
   }
 
   // An equation between function applications of one parameter s (p(t) = m*v(t)) holds for
-  // every value of s: add its instances at the other arguments the claim uses (t1, t2).
+  // every value of s: add its instances at the other arguments the claim uses (t1, t2). An
+  // equation without applications is between plain symbols, each one value: it is used as is.
   std::vector<Eq> instantiate(const std::vector<Eq>& eqs, const ex& claim) const {
     std::vector<ex> want;
     application_args(claim, want);
@@ -462,20 +828,36 @@ class Checker {
     return out;
   }
 
-  // Does a = b follow from the equations?
+  // Does a = b follow from the equations? The equations are reduced (contradictory ones are an
+  // input error), both sides are reduced with the eliminations, and prove_equal decides; a
+  // refutation stands only when its point satisfies the references (counterexample_gap). When
+  // the point fails because of one elimination (it puts F0 = y/t outside F0's domain, or gives
+  // sin(theta) a value theta does not have), the reduction is redone without that choice: any
+  // valid reduction proves, and any certified point refutes.
   Verdict follows(const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred = {}) {
     if (eqs0.empty()) return prove_equal(a, b, d_.symbols, opt_);
     std::vector<Eq> eqs = instantiate(eqs0, a - b);
-    Reduction red = reduce(eqs, a - b, preferred, false);
-    ex ra = reduced(a, red), rb = reduced(b, red);
-    Verdict v = prove_equal(ra, rb, d_.symbols, opt_);
-    if (v.kind == VerdictKind::Refuted && dependent(red, ra - rb)) {
-      Verdict u = undecided(v.method, "the difference does not vanish after eliminating " + eliminated_text(red) +
-                                          ", but the point found need not satisfy the references (" +
-                                          text(red.function_atoms[0]) + " was eliminated while its argument remains)");
+    Bans bans;
+    Reduction red;
+    Verdict v;
+    for (int attempt = 0;; ++attempt) {
+      red = reduce(eqs, a - b, preferred, false, bans);
+      reject_contradictions(red, eqs);
+      ex ra = reduced(a, red), rb = reduced(b, red);
+      v = prove_equal(ra, rb, d_.symbols, opt_);
+      if (v.kind != VerdictKind::Refuted) break;
+      Gap gap = counterexample_gap(red, eqs, v);
+      if (gap.why.empty()) break;
+      if (gap.elimination && attempt < 3 && bans.insert({gap.elimination->equation, gap.elimination->key}).second)
+        continue;
+      std::string after = red.eliminated.empty() ? "" : " after eliminating " + eliminated_text(red);
+      Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
       u.residual = text(ra - rb);
       v = u;
+      break;
     }
+    if (red.degenerate && v.holds())
+      v = undecided(v.method, "every order of elimination divides by a coefficient that vanishes identically");
     if (red.resource_limit && !v.holds()) {
       v = undecided(v.method, "resource limit: an equation would expand beyond " + std::to_string(opt_.max_terms) + " terms");
     }
@@ -507,6 +889,32 @@ class Checker {
     return c.result();
   }
 
+  // Does the linear system `nums` (linear in the unknowns) determine them? Only when some
+  // square choice of its equations has a coefficient determinant that is not identically zero:
+  // lsolve divides by pivots without knowing that log(a*b) - log(a) - log(b) is zero.
+  bool determines(const std::vector<ex>& nums, const std::vector<ex>& unknowns) {
+    const std::size_t n = unknowns.size(), m = nums.size();
+    if (n == 0 || m < n) return false;
+    std::vector<bool> pick(m, false);   // the chosen equations; combinations in lexicographic order
+    std::fill(pick.begin(), pick.begin() + static_cast<long>(n), true);
+    int tries = 0;
+    do {
+      GiNaC::matrix A(static_cast<unsigned>(n), static_cast<unsigned>(n));
+      unsigned r = 0;
+      for (std::size_t i = 0; i < m; ++i) {
+        if (!pick[i]) continue;
+        for (std::size_t j = 0; j < n; ++j) A(r, static_cast<unsigned>(j)) = nums[i].coeff(unknowns[j], 1);
+        ++r;
+      }
+      try {
+        if (nonzero_coefficient(A.determinant())) return true;
+      } catch (const std::exception&) {
+        // an unusable determinant: try the next choice
+      }
+    } while (++tries < 64 && std::prev_permutation(pick.begin(), pick.end()));
+    return false;
+  }
+
   ex symbol_of(const RuleArg& a) const {
     ex v = conv(a.value);
     if (!GiNaC::is_a<GiNaC::symbol>(v)) fail(a.pos, "expected a symbol", a.length);
@@ -516,40 +924,56 @@ class Checker {
 
 Verdict Checker::rewrite(const Relation& claim) {
   std::vector<ex> sd = sides(claim);
-  auto subs = substitutions(rule().with, nullptr);
+  std::vector<std::string> labels;
+  auto subs = substitutions(rule().with, nullptr, &labels);
   for (auto& e : sd) e = apply(e, subs);
   if (sd.size() < 2) {
     // An expression step: nothing to compare; its side conditions are still checked.
     return proved("expression", "an expression (no equation to check)");
   }
   std::vector<Eq> eqs = all_equations(rule().refs);
-  for (auto& q : eqs) q.e = apply(q.e, subs);
+  for (auto& q : eqs) apply_to(q, subs, labels);
   return links_follow(sd, eqs, rule().refs.empty() ? "identity" : "rewrite");
 }
 
+// `substitute S... into C`: the claim must follow from C with the substitutions applied and
+// from the substitutions themselves taken as equations. (The claim may still mention a
+// substituted name, T = 2*pi/omega, or a defined name whose definition brings one in; a
+// counterexample must then respect omega = sqrt(k/m) too.)
 Verdict Checker::substitute(const Relation& claim) {
-  std::vector<Eq> extra;
-  auto subs = substitutions(rule().refs, &extra);
-  auto w = substitutions(rule().with, nullptr);
+  std::vector<Eq> extra;   // references that are not `x = value`: equations only (added below)
+  std::vector<std::string> labels;
+  auto subs = substitutions(rule().refs, &extra, &labels);
+  auto w = substitutions(rule().with, nullptr, &labels);
   subs.insert(subs.end(), w.begin(), w.end());
   const Step& c = ref_step(rule().into[0]);
   const Relation& cr = claim_of(c);
   std::vector<ex> cs = sides(cr);
-  for (auto& e : cs) e = apply(e, subs);
+  std::vector<std::string> applied;   // the substitutions C' rests on
+  for (auto& e : cs) {
+    std::vector<bool> used;
+    e = apply(e, subs, &used);
+    for (std::size_t i = 0; i < used.size(); ++i)
+      if (used[i] && std::find(applied.begin(), applied.end(), labels[i]) == applied.end()) applied.push_back(labels[i]);
+  }
   std::vector<Eq> eqs;
   for (std::size_t i = 0; i + 1 < cs.size(); ++i) {
-    Eq q{cs[i] - cs[i + 1], ex(), c.label};
+    Eq q{cs[i] - cs[i + 1], ex(), c.label, applied};
     if (i == 0 && (GiNaC::is_a<GiNaC::symbol>(cs[0]) || pool_function_index(cs[0]) >= 0)) q.hint = cs[0];
     eqs.push_back(q);
   }
-  for (auto& q : extra) eqs.push_back(q);
+  for (const auto* group : {&rule().refs, &rule().with})
+    for (const auto& a : *group) {
+      auto e = equations(a);
+      eqs.insert(eqs.end(), e.begin(), e.end());
+    }
   if (cs.size() >= 2) res_.derived = text(cs.front()) + " = " + text(cs.back());
   else if (!cs.empty()) res_.derived = text(cs.front());
   std::vector<ex> sd = sides(claim);
   if (cs.size() < 2) {
     // substituting into an expression: the claim must be that expression
     if (sd.size() != 1) fail(rule().into[0].pos, "'" + c.label + "' is an expression; the claim must be one too");
-    Verdict v = prove_equal(sd[0], cs[0], d_.symbols, opt_);
+    Verdict v = follows(sd[0], cs[0], eqs);
     v.method = prefix_method("substitute", v.method);
     return v;
   }
@@ -603,6 +1027,12 @@ Verdict Checker::solve(const Relation& claim) {
       ex rest = (num - c * u).expand();
       if (rest.has(u) || has_any(c, unknowns)) linear = false;
     }
+  }
+  if (linear && !determines(nums, unknowns)) {
+    std::string names;
+    for (const auto& u : unknowns) names += (names.empty() ? "" : ", ") + text(out(u));
+    return undecided("lsolve", "the equations do not determine " + names +
+                                   ": the determinant of their coefficients vanishes identically");
   }
   if (linear) {
     GiNaC::lst eqlist, varlist;
@@ -681,12 +1111,16 @@ Verdict Checker::solve(const Relation& claim) {
     Reduction red = reduce(back, ex(0), elim, true);
     int checked = 0;
     for (const auto& left : red.leftover) {
-      Verdict v = prove_zero(atoms_.restore(out(left)), d_.symbols, opt_);
+      Verdict v = prove_zero(atoms_.restore(out(left.e)), d_.symbols, opt_);
       v.method = prefix_method("claim substituted back", v.method);
       c.add(v, "equation with " + text(out(lhs)) + " = " + text(out(G)));
       ++checked;
     }
     if (red.resource_limit) c.add(undecided("claim substituted back", "resource limit"), "");
+    if (red.degenerate)
+      c.add(undecided("claim substituted back",
+                      "every order of elimination divides by a coefficient that vanishes identically"),
+            "");
     if (checked == 0 && !red.resource_limit) {
       // Every equation was used to eliminate another unknown, or reduced to 0: the claim
       // satisfies all of them identically.
@@ -826,16 +1260,25 @@ Verdict Checker::first_order_rule(const Relation& claim) {
   return links_follow(sd, eqs, "first order");
 }
 
+// Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may be
+// differentiated; an equation between plain symbols (y = F0*t, y a symbol) is one value, and
+// differentiating it would "derive" 0 = F0. Such equations are used as they are.
 Verdict Checker::differentiate(const Relation& claim) {
   ex t = symbol_of(*rule().var);
   std::vector<Eq> eqs, originals;
   std::string derived;
   for (const auto& a : rule().refs)
     for (auto& q : equations(a)) {
-      ex de = q.e.diff(GiNaC::ex_to<GiNaC::symbol>(t));
-      eqs.push_back({de, ex(), q.from});
       originals.push_back(q);
+      if (has_application_at(q.e, t)) eqs.push_back({q.e.diff(GiNaC::ex_to<GiNaC::symbol>(t)), ex(), q.from});
     }
+  if (eqs.empty()) {
+    const RuleArg& a = rule().refs[0];
+    fail(a.pos, "'" + a.label + "' contains no function of " + text(t) +
+                    ": a plain symbol is one value and cannot be differentiated (declare the quantities that vary "
+                    "with " + text(t) + " as functions of " + text(t) + ")",
+         a.length);
+  }
   // the derivative of the first equation, as derived
   {
     const Relation& r = claim_of(ref_step(rule().refs[0]));
@@ -855,10 +1298,13 @@ Verdict Checker::integrate(const Relation& claim) {
   ex t = symbol_of(*rule().var);
   const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
   ex T0 = conv(rule().point->value);
+  // The references at the bounds: only equations between function applications of t hold for
+  // every t (see has_application_at); the others are used as they are.
   auto inst = [&](const std::vector<Eq>& eqs, const std::vector<ex>& at) {
     std::vector<Eq> out = eqs;
     for (const auto& p : at)
-      for (const auto& q : eqs) out.push_back({q.e.subs(t == p), ex(), q.from});
+      for (const auto& q : eqs)
+        if (has_application_at(q.e, t)) out.push_back({q.e.subs(t == p), ex(), q.from});
     return out;
   };
   std::vector<Eq> ref_eqs = all_equations(rule().refs);
@@ -1040,6 +1486,7 @@ Verdict run_rule(const Derivation& d, const Step& s, const Relation& claim, cons
     return c.run(claim);
   } catch (const StepError& e) {
     res.errors.push_back(e.error);
+    if (e.input) res.input_error = true;
     return undecided(s.rule.name, "the step could not be checked: " + e.error.message());
   } catch (const InputError& e) {
     res.errors.push_back(with_line(d, e));
@@ -1145,6 +1592,7 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
 }
 
 int CheckSummary::exit_code(bool strict) const {
+  if (input_errors > 0) return 2;
   if (refuted > 0 || errors > 0) return 1;
   if (undecided > 0) return 3;
   if (strict && errata > 0) return 1;
@@ -1158,6 +1606,7 @@ CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt) {
     std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
     if (r.erratum_reported) ++sum.errata;
     r.premise = s.rule.name == "given" || s.rule.name == "definition";
+    if (r.input_error) ++sum.input_errors;
     if (own_errors > 0) ++sum.errors;
     else if (r.premise && r.verdict.holds()) ++sum.premises;
     else switch (r.verdict.kind) {

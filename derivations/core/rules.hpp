@@ -19,6 +19,7 @@ struct StepResult {
   std::vector<InputError> errors;   // dimension mismatches, undefined symbols (erratum), ...
   bool erratum_reported = false;    // the printed claim's error was reported; corrected form checked
   bool premise = false;             // rule given/definition: a premise, checked only for symbols and dimensions
+  bool input_error = false;         // the step's input cannot be used (contradictory references): exit code 2
   double seconds = 0;
 };
 
@@ -28,6 +29,7 @@ struct CheckSummary {
   std::vector<StepResult> results;
   int premises = 0;   // given/definition steps: not claims, so never counted as proved
   int proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
+  int input_errors = 0;   // steps whose references contradict each other (also counted in errors)
   int exit_code(bool strict) const;   // 0 / 1 / 2 / 3 as in docs/format.md
 };
 

@@ -1,0 +1,469 @@
+// Soundness of the rules (issue 8): degenerate eliminations, instantiating references that are
+// not functions of the variable, contradictory references, counterexamples that violate the
+// references, and `substitute` with the author's substitution equations. Every false claim
+// here must be refuted (with a counterexample that satisfies the references) or undecided,
+// never proved; every true claim must not be refuted.
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "derivations/core/derivation.hpp"
+#include "derivations/core/report.hpp"
+#include "derivations/core/rules.hpp"
+
+namespace {
+
+// A derivation parsed from text and checked; results looked up by label.
+struct Checked {
+  std::unique_ptr<dc::Derivation> d;
+  dc::CheckSummary sum;
+  const dc::StepResult& at(const std::string& label) const {
+    for (const auto& r : sum.results)
+      if (r.step->label == label) return r;
+    FAIL("no step " << label);
+    return sum.results.front();
+  }
+};
+
+Checked check(const std::string& name, const std::string& text) {
+  Checked c;
+  c.d = std::make_unique<dc::Derivation>(dc::parse_derivation(dc::SourceText{name, text}));
+  c.sum = dc::check_derivation(*c.d);
+  return c;
+}
+
+std::string errors_of(const dc::StepResult& r) {
+  std::string out;
+  for (const auto& e : r.errors) out += e.format();
+  return out;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// A false claim: never proved or holding; refuted only with evidence.
+void require_not_accepted(const Checked& c, const std::string& label) {
+  const dc::StepResult& r = c.at(label);
+  INFO(label << ": " << dc::verdict_phrase(r.verdict) << " | " << r.verdict.detail << " | " << r.verdict.reason
+             << " | " << errors_of(r));
+  CHECK_FALSE(r.verdict.holds());
+}
+
+void require_refuted(const Checked& c, const std::string& label) {
+  const dc::StepResult& r = c.at(label);
+  INFO(label << ": " << dc::verdict_phrase(r.verdict) << " | " << r.verdict.detail << " | " << r.verdict.reason
+             << " | " << errors_of(r));
+  CHECK(r.verdict.kind == dc::VerdictKind::Refuted);
+}
+
+void require_holds(const Checked& c, const std::string& label) {
+  const dc::StepResult& r = c.at(label);
+  INFO(label << ": " << dc::verdict_phrase(r.verdict) << " | " << r.verdict.detail << " | " << r.verdict.reason
+             << " | " << errors_of(r));
+  CHECK(r.verdict.holds());
+  CHECK(r.errors.empty());
+}
+
+void require_not_refuted(const Checked& c, const std::string& label) {
+  const dc::StepResult& r = c.at(label);
+  INFO(label << ": " << dc::verdict_phrase(r.verdict) << " | " << r.verdict.detail << " | " << r.verdict.reason
+             << " | " << errors_of(r));
+  CHECK(r.verdict.kind != dc::VerdictKind::Refuted);
+}
+
+}  // namespace
+
+// --- 1. degenerate elimination -------------------------------------------------------------
+
+TEST_CASE("an identically zero coefficient never eliminates a variable", "[rules][soundness][elimination]") {
+  Checked c = check("degenerate.dc",
+                    "symbol a, b : positive [1]\n"
+                    "symbol u, x : real [1]\n"
+                    "ref: u*log(a*b) = u*log(a) + u*log(b)\n"
+                    "    by given\n"
+                    "bad_u: u = 0\n"
+                    "    by rewrite ref\n"
+                    "bad_ux: u*x = 0\n"
+                    "    by rewrite ref\n"
+                    "ok_same: u*log(a*b) = u*(log(a) + log(b))\n"
+                    "    by rewrite ref\n");
+  require_refuted(c, "bad_u");
+  require_refuted(c, "bad_ux");
+  CHECK_FALSE(c.at("bad_u").verdict.point.empty());   // a counterexample: every u satisfies ref
+  require_holds(c, "ok_same");
+}
+
+TEST_CASE("a trigonometric coefficient that vanishes identically does not eliminate", "[rules][soundness][elimination]") {
+  Checked c = check("trig.dc",
+                    "symbol u, x : real [1]\n"
+                    "pyth: u*(sin(x)^2 + cos(x)^2) = u\n"
+                    "    by given\n"
+                    "bad_u: u = 0\n"
+                    "    by rewrite pyth\n"
+                    "bad_u1: u = 1\n"
+                    "    by rewrite pyth\n");
+  require_not_accepted(c, "bad_u");
+  require_not_accepted(c, "bad_u1");
+}
+
+TEST_CASE("a coefficient that a later reference makes zero does not eliminate", "[rules][soundness][elimination]") {
+  // c*u = 0 with c = 0 says nothing about u; dividing by c first would "derive" u = 0.
+  Checked c = check("late.dc",
+                    "symbol c, u, x : real [1]\n"
+                    "cu: c*u = 0\n"
+                    "    by given\n"
+                    "c0: c = 0\n"
+                    "    by given\n"
+                    "bad_u: u = 0\n"
+                    "    by rewrite cu, c0\n"
+                    "bad_ux: u*x = 0\n"
+                    "    by rewrite cu, c0\n"
+                    "ok_c: c*x = 0\n"
+                    "    by rewrite cu, c0\n");
+  require_refuted(c, "bad_u");
+  require_refuted(c, "bad_ux");
+  require_holds(c, "ok_c");
+}
+
+TEST_CASE("eliminations with nonzero coefficients still prove true steps", "[rules][soundness][elimination]") {
+  Checked c = check("nondegenerate.dc",
+                    "symbol m, g, F : positive [1]\n"
+                    "symbol theta : in (0, pi/2) [1]\n"
+                    "symbol a : positive [1]\n"
+                    "symbol u, w : real [1]\n"
+                    "incline: F = m*g*sin(theta)\n"
+                    "    by given\n"
+                    "ok_m: m = F/(g*sin(theta))\n"
+                    "    by rewrite incline\n"
+                    "bad_m: m = F/(g*cos(theta))\n"
+                    "    by rewrite incline\n"
+                    "lin: u*(log(a) + 1) = w\n"
+                    "    by given\n"
+                    "ok_u: u = w/(log(a) + 1)\n"
+                    "    by rewrite lin\n"
+                    "bad_u: u = w/(log(a) + 2)\n"
+                    "    by rewrite lin\n");
+  require_holds(c, "ok_m");
+  require_refuted(c, "bad_m");
+  require_holds(c, "ok_u");
+  require_refuted(c, "bad_u");
+}
+
+// --- 2. instantiation only of references between function applications ---------------------
+
+TEST_CASE("integrate does not instantiate a plain symbol at the bounds", "[rules][soundness][integrate]") {
+  Checked c = check("plain.dc",
+                    "symbol F0 : positive [m/s^2]\n"
+                    "symbol t, t1 : positive [s]\n"
+                    "symbol y : real [m/s]\n"
+                    "r: y = F0*t\n"
+                    "    by given\n"
+                    "bad: integral(F0*t, t, 0, t1) = F0*t1^2\n"
+                    "    by integrate r wrt t from 0\n"
+                    "ok: integral(F0*t, t, 0, t1) = F0*t1^2/2\n"
+                    "    by integrate r wrt t from 0\n");
+  require_refuted(c, "bad");
+  require_holds(c, "ok");
+}
+
+TEST_CASE("integrate still instantiates references between function applications", "[rules][soundness][integrate]") {
+  Checked c = check("apps.dc",
+                    "symbol F0 : positive [m/s^2]\n"
+                    "symbol t, t1 : positive [s]\n"
+                    "function y(t) : real [m/s]\n"
+                    "r: y(t) = F0*t\n"
+                    "    by given\n"
+                    "bad: integral(y(t), t, 0, t1) = F0*t1^2\n"
+                    "    by integrate r wrt t from 0\n"
+                    "ok: integral(y(t), t, 0, t1) = F0*t1^2/2\n"
+                    "    by integrate r wrt t from 0\n");
+  require_refuted(c, "bad");
+  require_holds(c, "ok");
+}
+
+TEST_CASE("integrate of an ODE does not instantiate a plain symbol at the initial point",
+          "[rules][soundness][integrate]") {
+  Checked c = check("ode_plain.dc",
+                    "symbol F0 : positive [m/s^3]\n"
+                    "symbol t : positive [s]\n"
+                    "symbol u : real [m/s^2]\n"
+                    "function x(t) : real [m/s]\n"
+                    "acc: diff(x(t), t) = u\n"
+                    "    by given\n"
+                    "u_def: u = F0*t\n"
+                    "    by given\n"
+                    "bad: x(t) = x(0)\n"
+                    "    by integrate acc, u_def wrt t from 0\n"
+                    "ok: x(t) = x(0) + F0*t^2/2\n"
+                    "    by integrate acc, u_def wrt t from 0\n");
+  require_not_accepted(c, "bad");
+  require_holds(c, "ok");
+}
+
+// --- 3. contradictory references --------------------------------------------------------------
+
+TEST_CASE("references that contradict each other are an input error naming both", "[rules][soundness][contradiction]") {
+  Checked c = check("contra.dc",
+                    "symbol a, x : real [1]\n"
+                    "a1: a = 1\n"
+                    "    by given\n"
+                    "a2: a = 2\n"
+                    "    by given\n"
+                    "bad: x = 5\n"
+                    "    by rewrite a1, a2\n");
+  const dc::StepResult& r = c.at("bad");
+  CHECK_FALSE(r.verdict.holds());
+  REQUIRE(r.errors.size() == 1);
+  std::string msg = r.errors[0].format();
+  CAPTURE(msg);
+  CHECK(contains(msg, "contra.dc:7:"));
+  CHECK(contains(msg, "error: the references 'a1' and 'a2' contradict each other"));
+  CHECK(r.input_error);
+  CHECK(c.sum.exit_code(false) == 2);
+}
+
+TEST_CASE("a contradiction through several references names all of them", "[rules][soundness][contradiction]") {
+  Checked c = check("contra3.dc",
+                    "symbol x, y, z : real [1]\n"
+                    "e1: x + y = 1\n"
+                    "    by given\n"
+                    "e2: x - y = 1\n"
+                    "    by given\n"
+                    "e3: y = 2\n"
+                    "    by given\n"
+                    "bad: x = 1\n"
+                    "    by rewrite e1, e2, e3\n"
+                    "self: z = 1 = 2\n"
+                    "    by given\n"
+                    "bad_self: x = z\n"
+                    "    by rewrite self\n");
+  const dc::StepResult& r = c.at("bad");
+  REQUIRE(r.errors.size() == 1);
+  CAPTURE(r.errors[0].format());
+  CHECK(contains(r.errors[0].message(), "the references 'e1', 'e2' and 'e3' contradict each other"));
+  const dc::StepResult& s = c.at("bad_self");
+  REQUIRE(s.errors.size() == 1);
+  CAPTURE(s.errors[0].format());
+  CHECK(contains(s.errors[0].message(), "the reference 'self' contradicts itself"));
+  CHECK(c.sum.exit_code(false) == 2);
+}
+
+TEST_CASE("consistent redundant references are not a contradiction", "[rules][soundness][contradiction]") {
+  Checked c = check("redundant.dc",
+                    "symbol a, x : real [1]\n"
+                    "a1: a = 1\n"
+                    "    by given\n"
+                    "a2: 2*a = 2\n"
+                    "    by given\n"
+                    "ok: a + 1 = 2\n"
+                    "    by rewrite a1, a2\n"
+                    "bad: a = 2\n"
+                    "    by rewrite a1, a2\n");
+  require_holds(c, "ok");
+  require_refuted(c, "bad");
+  CHECK(c.sum.exit_code(false) == 1);
+}
+
+TEST_CASE("a file with contradictory references exits with code 2", "[rules][soundness][contradiction]") {
+  std::string path =
+      (std::filesystem::temp_directory_path() / ("derivcheck_contra_" + std::to_string(::getpid()) + ".dc")).string();
+  {
+    std::ofstream f(path);
+    f << "symbol a, x : real [1]\n"
+         "a1: a = 1\n"
+         "    by given\n"
+         "a2: a = 2\n"
+         "    by given\n"
+         "bad: x = 5\n"
+         "    by rewrite a1, a2\n";
+  }
+  std::vector<dc::FileReport> reports{dc::check_file(path)};
+  std::remove(path.c_str());
+  CHECK(dc::totals(reports).exit_code(false) == 2);
+  std::string text = dc::format_text(reports, {});
+  CAPTURE(text);
+  CHECK(contains(text, ":7:"));
+  CHECK(contains(text, "error: the references 'a1' and 'a2' contradict each other"));
+}
+
+// --- 4. counterexamples satisfy the references -------------------------------------------------
+
+TEST_CASE("a counterexample that violates a leftover reference is not a refutation", "[rules][soundness][counterexample]") {
+  // x^3 + x is increasing, so the reference forces x = y; nothing in it is linear.
+  Checked c = check("cubic.dc",
+                    "symbol x, y : real [1]\n"
+                    "cubic: x^3 + x = y^3 + y\n"
+                    "    by given\n"
+                    "ok_xy: x = y\n"
+                    "    by rewrite cubic\n"
+                    "ok_sq: x^2 = y^2\n"
+                    "    by rewrite cubic\n");
+  require_not_refuted(c, "ok_xy");
+  require_not_refuted(c, "ok_sq");
+  CHECK(contains(c.at("ok_xy").verdict.reason, "satisfy reference 'cubic'"));
+}
+
+TEST_CASE("a counterexample must respect the domain of an eliminated symbol", "[rules][soundness][counterexample]") {
+  // m = x^2 - 1 with m positive forces |x| > 1, where sqrt((x^2 - 1)^2) = x^2 - 1.
+  Checked c = check("domain.dc",
+                    "symbol m : positive [1]\n"
+                    "symbol x : real [1]\n"
+                    "md: m = x^2 - 1\n"
+                    "    by given\n"
+                    "ok: sqrt((x^2 - 1)^2) = x^2 - 1\n"
+                    "    by rewrite md\n"
+                    "bad: sqrt((x^2 - 1)^2) = 1 - x^2\n"
+                    "    by rewrite md\n");
+  require_not_refuted(c, "ok");
+  require_not_accepted(c, "bad");
+}
+
+// --- 5. substitute uses the substitution equations ----------------------------------------------
+
+TEST_CASE("substitute: a claim that mentions the substituted name follows", "[rules][soundness][substitute]") {
+  std::string rule = GENERATE(as<std::string>{}, "given", "definition");
+  std::string rule2 = GENERATE(as<std::string>{}, "given", "definition");
+  CAPTURE(rule, rule2);
+  std::string text = "symbol k : positive [kg/s^2]\n"
+                     "symbol m : positive [kg]\n";
+  if (rule == "given") text += "symbol omega : positive [1/s]\n";
+  if (rule2 == "given") text += "symbol T : positive [s]\n";
+  text += "omega_def: omega = sqrt(k/m)\n"
+          "    by " + rule + "\n"
+          "period_def: T = 2*pi/omega\n"
+          "    by " + rule2 + "\n"
+          "period: T = 2*pi/omega = 2*pi*sqrt(m/k)\n"
+          "    by substitute omega_def into period_def\n"
+          "period_rw: T = 2*pi/omega = 2*pi*sqrt(m/k)\n"
+          "    by rewrite period_def, omega_def\n"
+          "bad_half: T = pi*sqrt(m/k)\n"
+          "    by substitute omega_def into period_def\n"
+          "bad_inverse: T = 2*pi*sqrt(k/m)\n"
+          "    by substitute omega_def into period_def\n"
+          "bad_link: T = 2*pi/omega = pi*sqrt(m/k)\n"
+          "    by substitute omega_def into period_def\n";
+  Checked c = check("period.dc", text);
+  require_holds(c, "period");
+  require_holds(c, "period_rw");
+  require_refuted(c, "bad_half");
+  require_refuted(c, "bad_inverse");   // (also a dimension error)
+  require_refuted(c, "bad_link");
+}
+
+TEST_CASE("substitute: a defined name whose definition brings in a substituted symbol", "[rules][soundness][substitute]") {
+  Checked c = check("energy.dc",
+                    "symbol m : positive [kg]\n"
+                    "symbol g : positive [m/s^2]\n"
+                    "symbol h : positive [m]\n"
+                    "symbol v : positive [m/s]\n"
+                    "symbol E : real [kg*m^2/s^2]\n"
+                    "Ek_def: Ek = m*v^2/2\n"
+                    "    by definition\n"
+                    "v_def: v = sqrt(2*g*h)\n"
+                    "    by given\n"
+                    "energy: E = Ek\n"
+                    "    by given\n"
+                    "ok: E = Ek = m*g*h\n"
+                    "    by substitute v_def into energy\n"
+                    "bad: E = Ek = 2*m*g*h\n"
+                    "    by substitute v_def into energy\n"
+                    "ok_inline: E = m*g*h\n"
+                    "    by substitute v = sqrt(2*g*h) into energy\n");
+  require_holds(c, "ok");
+  require_refuted(c, "bad");
+  require_holds(c, "ok_inline");
+}
+
+// --- the same principles in the other rules -------------------------------------------------------
+
+TEST_CASE("differentiate does not differentiate an equation between plain symbols", "[rules][soundness][differentiate]") {
+  // y = F0*t with y a symbol is one value; its derivative would "derive" 0 = F0.
+  Checked c = check("diff_plain.dc",
+                    "symbol F0 : positive [m/s^2]\n"
+                    "symbol t : positive [s]\n"
+                    "symbol y : real [m/s]\n"
+                    "function x(t) : real [m/s]\n"
+                    "r: y = F0*t\n"
+                    "    by given\n"
+                    "bad: F0 = 0\n"
+                    "    by differentiate r wrt t\n"
+                    "rx: x(t) = F0*t\n"
+                    "    by given\n"
+                    "ok: diff(x(t), t) = F0\n"
+                    "    by differentiate rx, r wrt t\n"
+                    "bad_mixed: F0 = 0\n"
+                    "    by differentiate rx, r wrt t\n");
+  const dc::StepResult& r = c.at("bad");
+  CHECK_FALSE(r.verdict.holds());
+  REQUIRE(r.errors.size() == 1);
+  CHECK(contains(r.errors[0].message(), "'r' contains no function of t"));
+  require_holds(c, "ok");
+  require_not_accepted(c, "bad_mixed");
+}
+
+TEST_CASE("solve does not divide by a determinant that vanishes identically", "[rules][soundness][solve]") {
+  Checked c = check("solve_degenerate.dc",
+                    "symbol a, b : positive [1]\n"
+                    "symbol u, w : real [1]\n"
+                    "ref: u*log(a*b) = u*log(a) + u*log(b)\n"
+                    "    by given\n"
+                    "bad_u: u = 0\n"
+                    "    by solve ref for u\n"
+                    "lin: u*(log(a) + 1) = w\n"
+                    "    by given\n"
+                    "ok_u: u = w/(log(a) + 1)\n"
+                    "    by solve lin for u\n"
+                    "bad_u2: u = w/(log(a) + 2)\n"
+                    "    by solve lin for u\n");
+  require_not_accepted(c, "bad_u");
+  CHECK(contains(c.at("bad_u").verdict.reason, "do not determine u"));
+  require_holds(c, "ok_u");
+  require_refuted(c, "bad_u2");
+}
+
+TEST_CASE("a substitution that contradicts its target is an input error naming both", "[rules][soundness][contradiction]") {
+  Checked c = check("sub_contra.dc",
+                    "symbol a, x : real [1]\n"
+                    "C: a = 2\n"
+                    "    by given\n"
+                    "bad: x = 1\n"
+                    "    by substitute a = 1 into C\n"
+                    "bad_rw: x = 1\n"
+                    "    by rewrite C with a = 1\n");
+  for (const char* label : {"bad", "bad_rw"}) {
+    const dc::StepResult& r = c.at(label);
+    CHECK_FALSE(r.verdict.holds());
+    REQUIRE(r.errors.size() == 1);
+    CAPTURE(r.errors[0].format());
+    CHECK(contains(r.errors[0].message(), "the references 'C' and 'a = 1' contradict each other"));
+    CHECK(r.input_error);
+  }
+  CHECK(c.sum.exit_code(false) == 2);
+}
+
+TEST_CASE("a counterexample is recomputed when an elimination leaves a domain", "[rules][soundness][counterexample]") {
+  // Eliminating e (declared in [0, 1]) with the restitution law and sampling v2p freely gave a
+  // point with e = 1.49; the refutation is found again with another elimination, and its point
+  // samples e inside [0, 1] and computes v2p from the references.
+  Checked c = check("recompute.dc",
+                    "symbol m1, m2 : positive [kg]\n"
+                    "symbol v1, v2, v1p, v2p : real [m/s]\n"
+                    "symbol e : in [0, 1] [1]\n"
+                    "momentum: m1*v1 + m2*v2 = m1*v1p + m2*v2p\n"
+                    "    by given\n"
+                    "restitution: e = (v2p - v1p)/(v1 - v2)\n"
+                    "    by given\n"
+                    "bad: v1p = (m1*v1 + m2*v2 - e*m2*(v1 - v2))/(m1 - m2)\n"
+                    "    by rewrite momentum, restitution\n");
+  require_refuted(c, "bad");
+  const dc::Verdict& v = c.at("bad").verdict;
+  for (const auto& [name, value] : v.point) {
+    CAPTURE(name, value);
+    CHECK(name != "v2p");   // determined by the references, never sampled freely
+  }
+}
