@@ -36,12 +36,15 @@ std::string file_kind(mode_t m) {
   return "not a regular file";
 }
 
+// The file an error is about ("path: error: ..."); an empty name would print as ": error:".
+std::string shown_name(const std::string& path) { return path.empty() ? "<empty file name>" : path; }
+
 [[noreturn]] void cannot_read(const std::string& path, const std::string& why) {
-  throw InputError({path, 0, 0}, "cannot read '" + path + "': " + why);
+  throw InputError({shown_name(path), 0, 0}, "cannot read '" + path + "': " + why);
 }
 
 [[noreturn]] void cannot_write(const std::string& path, const std::string& why) {
-  throw InputError({path, 0, 0}, "cannot write '" + path + "': " + why);
+  throw InputError({shown_name(path), 0, 0}, "cannot write '" + path + "': " + why);
 }
 
 }  // namespace
@@ -295,6 +298,8 @@ class PendingFile {
     }
   }
 
+  const std::string& path() const { return path_; }
+
   void commit(const std::string& target, mode_t mode) {
     if (::fchmod(fd_, mode) != 0) cannot_write(shown_, errno_text(errno));
     if (::fsync(fd_) != 0) cannot_write(shown_, errno_text(errno));
@@ -366,6 +371,16 @@ void write_file_atomic(const std::string& path, const std::function<void(const B
   mode_t mode = exists ? (st.st_mode & 07777) : new_file_mode();
   PendingFile tmp(target, path);
   produce([&](std::string_view data) { tmp.write(data); });
+  tmp.commit(target, mode);
+}
+
+void write_file_atomic_at(const std::string& path, const std::function<void(const std::string& temp_path)>& produce) {
+  struct stat st {};
+  bool exists = false;
+  std::string target = output_target(path, &st, &exists);
+  mode_t mode = exists ? (st.st_mode & 07777) : new_file_mode();
+  PendingFile tmp(target, path);
+  produce(tmp.path());
   tmp.commit(target, mode);
 }
 

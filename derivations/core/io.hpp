@@ -97,6 +97,10 @@ void write_file_atomic(const std::string& path, const std::string& content);
 // temporary and propagates).
 using ByteSink = std::function<void(std::string_view)>;
 void write_file_atomic(const std::string& path, const std::function<void(const ByteSink&)>& produce);
+// The same, for content another program writes by name (gnuplot's `set output`): `produce`
+// gets the temporary file's path and must fill that file in place (open and truncate it,
+// not replace it).
+void write_file_atomic_at(const std::string& path, const std::function<void(const std::string& temp_path)>& produce);
 
 // An InputError when `output` is one of the `inputs` (the same file: device and inode, so
 // links and other spellings count), checked before any work is done.
