@@ -22,7 +22,7 @@ int run(const CheckOptions& o) {
   ro.timings = o.timings;
   ro.quiet = o.quiet;
   ro.strict = o.strict;
-  if (o.json) std::cout << to_json(reports, ro).dump(2) << "\n";
+  if (o.json) std::cout << json_text(to_json(reports, ro), 2) << "\n";
   else std::cout << format_text(reports, ro);
   std::cout.flush();
   return totals(reports).exit_code(o.strict);

@@ -1,6 +1,5 @@
 // derivcheck claims FILE.jsonl — batch-check a claim bank, one JSON result per line (docs/cli.md).
 #include <iostream>
-#include <sstream>
 
 #include "apps/commands.hpp"
 #include "derivations/core/claims.hpp"
@@ -15,24 +14,31 @@ struct ClaimsOptions {
 };
 
 int run(const ClaimsOptions& o) {
-  std::string text = read_file(o.file);
-  std::istringstream in(text);
-  std::string line;
-  int line_no = 0;
+  // Line by line: a bad line (invalid UTF-8, malformed JSON, wrong field types, an unknown
+  // kind, a line over the limit) gets an "error" result and the rest go on.
+  InputFile file(o.file);
+  LineReader reader(file);
+  LineReader::Line line;
+  int claims = 0;
   bool refuted = false, undecided = false, malformed = false;
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find_first_not_of(" \t") == std::string::npos) continue;
-    nlohmann::ordered_json r = check_claim_line(line, line_no, o.file);
+  while (reader.next(line)) {
+    if (!line.too_long && line.text.find_first_not_of(" \t") == std::string::npos) continue;
+    ++claims;
+    nlohmann::ordered_json r =
+        line.too_long ? claim_line_error(line.number, o.file,
+                                         "the line is " + std::to_string(line.length) + " bytes long; a claim may be at most " +
+                                             std::to_string(kMaxInputLineBytes >> 20) + " MiB")
+                      : check_claim_line(line.text, line.number, o.file);
     if (o.no_timings) r.erase("seconds");
     std::string verdict = r.value("verdict", "");
     if (verdict == "error") malformed = true;
     else if (verdict == "refuted") refuted = true;
     else if (verdict == "undecided") undecided = true;
-    std::cout << r.dump() << "\n";
+    std::cout << json_text(r) << "\n";
   }
   std::cout.flush();
+  if (claims == 0)
+    throw InputError({o.file, 0, 0}, "no claims (the file is empty or has only blank lines); expected one JSON object per line");
   if (malformed) return kExitInputError;
   if (refuted) return kExitRefuted;
   if (undecided) return kExitUndecided;

@@ -3,6 +3,7 @@
 
 #include "apps/commands.hpp"
 #include "derivations/core/claims.hpp"
+#include "derivations/core/io.hpp"
 #include "derivations/core/report.hpp"
 
 namespace dc::cli {
@@ -16,7 +17,7 @@ struct EqualOptions {
 int run(const EqualOptions& o) {
   Verdict v = check_equal(o.lhs, o.rhs, o.assume);
   if (o.json) {
-    std::cout << verdict_json(v).dump(2) << "\n";
+    std::cout << dc::json_text(verdict_json(v), 2) << "\n";
   } else {
     std::cout << verdict_phrase(v) << "\n" << verdict_evidence(v, "    ");
     for (const auto& sc : v.side_conditions)

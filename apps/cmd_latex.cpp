@@ -23,8 +23,11 @@ struct LatexCliOptions {
 };
 
 int run(const LatexCliOptions& o) {
+  const std::vector<std::string> files = dc::derivation_files(o.inputs);
+  const bool to_stdout = o.output.empty() || o.output == "-";
+  if (!to_stdout) refuse_output_over_inputs(o.output, files);   // before any work
   std::vector<Derivation> ds;
-  for (const auto& f : dc::derivation_files(o.inputs)) ds.push_back(load_derivation(f));  // InputError -> exit 2
+  for (const auto& f : files) ds.push_back(load_derivation(f));  // InputError -> exit 2
   std::vector<const Derivation*> ptrs;
   for (const auto& d : ds) ptrs.push_back(&d);
   std::vector<CheckSummary> summaries;
@@ -41,16 +44,11 @@ int run(const LatexCliOptions& o) {
     lo.checks = &checks;
   }
   std::string tex = write_latex(ptrs, lo);
-  if (o.output.empty() || o.output == "-") {
+  if (to_stdout) {
     std::cout << tex;
     return kExitOk;
   }
-  try {
-    write_file_atomic(o.output, tex);
-  } catch (const std::runtime_error& e) {
-    std::cerr << "derivcheck: error: " << e.what() << "\n";
-    return kExitInputError;
-  }
+  write_file_atomic(o.output, tex);   // InputError (cannot write) -> exit 2, target untouched
   return kExitOk;
 }
 

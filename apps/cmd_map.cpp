@@ -27,12 +27,7 @@ std::vector<std::pair<std::string, std::string>> scan_tests(const std::string& r
   for (const auto& ent : fs::recursive_directory_iterator(root))
     if (ent.is_regular_file() && ent.path().extension() == ".cpp") paths.push_back(ent.path());
   std::sort(paths.begin(), paths.end());
-  for (const auto& p : paths) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    out.emplace_back((fs::path(root) / fs::relative(p, root)).generic_string(), ss.str());
-  }
+  for (const auto& p : paths) out.emplace_back((fs::path(root) / fs::relative(p, root)).generic_string(), dc::read_file(p.string()));
   return out;
 }
 
@@ -70,6 +65,7 @@ static dc::cli::CommandRegistrar reg_map(
       sub.add_option("-o,--output", *output, "write to this file (atomically) instead of stdout");
       return [=]() -> int {
         auto files = dc::derivation_files(*inputs);
+        if (!output->empty()) dc::refuse_output_over_inputs(*output, files);
         auto test_refs = scan_tests(*tests);
         std::ostringstream md;
         md << "# Handout 9 map: every equation, where it is checked, and its tests\n\n"

@@ -2,11 +2,13 @@
 
 #include <chrono>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "derivations/core/claims.hpp"
+#include "derivations/core/io.hpp"
 
 namespace dc::chart {
 
@@ -42,8 +44,13 @@ std::vector<CheckerStrategy> checker_strategies(const std::vector<int>& ks, cons
 }
 
 std::vector<LabelledClaim> read_corpus(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::invalid_argument("cannot read claim corpus '" + path + "'");
+  std::string text;
+  try {
+    text = normalize_text(read_file(path));
+  } catch (const InputError& e) {
+    throw std::invalid_argument(e.message());   // "cannot read 'path': reason"
+  }
+  std::istringstream in(text);
   std::vector<LabelledClaim> out;
   std::string line;
   int n = 0;

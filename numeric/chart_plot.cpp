@@ -144,17 +144,19 @@ std::vector<std::string> write_figures(const Plot& p, const std::string& stem) {
   written.push_back(stem + ".tex");
   if (!have_gnuplot()) return written;
   for (const auto& [term, ext] : {std::pair<std::string, std::string>{"pngcairo", ".png"}, {"svg", ".svg"}}) {
-    const std::string out = stem + ext, tmp = out + ".tmp" + std::to_string(::getpid());
-    const std::string script_path = stem + ext + ".gp.tmp" + std::to_string(::getpid());
-    write_file_atomic(script_path, gnuplot_script(p, term, tmp));
-    const std::string cmd = "gnuplot " + std::string("'") + script_path + "' 2>/dev/null";
-    const int rc = std::system(cmd.c_str());
-    std::filesystem::remove(script_path);
-    if (rc != 0 || !std::filesystem::exists(tmp)) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error("gnuplot failed to render " + out);
-    }
-    std::filesystem::rename(tmp, out);
+    const std::string out = stem + ext;
+    // gnuplot renders into the writer's temporary file (its script goes through a pipe), so
+    // a failed or interrupted run leaves the previous figure and no stray files.
+    write_file_atomic_at(out, [&](const std::string& tmp) {
+      const std::string script = gnuplot_script(p, term, tmp);
+      FILE* g = ::popen("gnuplot 2>/dev/null", "w");
+      if (!g) throw std::runtime_error("gnuplot failed to start for " + out);
+      const bool sent = std::fwrite(script.data(), 1, script.size(), g) == script.size();
+      const int rc = ::pclose(g);
+      std::error_code ec;
+      if (!sent || rc != 0 || std::filesystem::file_size(tmp, ec) == 0 || ec)
+        throw std::runtime_error("gnuplot failed to render " + out);
+    });
     written.push_back(out);
   }
   return written;

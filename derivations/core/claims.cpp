@@ -3,6 +3,7 @@
 #include <chrono>
 #include <functional>
 
+#include "derivations/core/io.hpp"
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/report.hpp"
@@ -503,6 +504,38 @@ class ClaimLine {
 
 }  // namespace
 
+nlohmann::ordered_json claim_line_error(int line_no, const std::string& file, const std::string& message,
+                                        const nlohmann::json* id) {
+  nlohmann::ordered_json out;
+  if (id) out["id"] = *id;
+  out["line"] = line_no;
+  out["verdict"] = "error";
+  out["error"] = file + ":" + std::to_string(line_no) + ": error: " + message;
+  return out;
+}
+
+namespace {
+
+// The line with every byte that is not valid UTF-8 replaced by U+FFFD.
+std::string replace_invalid_utf8(std::string_view s) {
+  std::string out;
+  while (!s.empty()) {
+    std::size_t bad = invalid_utf8_at(s);
+    if (bad == std::string_view::npos) {
+      out += s;
+      break;
+    }
+    out += s.substr(0, bad);
+    out += "\xEF\xBF\xBD";
+    s.remove_prefix(bad + 1);
+  }
+  return out;
+}
+
+char hex_digit(int v) { return static_cast<char>(v < 10 ? '0' + v : 'A' + v - 10); }
+
+}  // namespace
+
 nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
                                         const ProveOptions& opt) {
   nlohmann::ordered_json out;
@@ -514,6 +547,16 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
     out["error"] = file + ":" + std::to_string(line_no) + ": error: " + msg;
     return out;
   };
+  // JSON is UTF-8: a line that is not is an error (named by its id when the rest of the line
+  // still reads as a claim), and the other lines go on.
+  if (std::size_t bad = invalid_utf8_at(line); bad != std::string::npos) {
+    unsigned char b = static_cast<unsigned char>(line[bad]);
+    std::string msg = "invalid UTF-8 at column " + std::to_string(bad + 1) + " (byte 0x" + hex_digit(b >> 4) +
+                      hex_digit(b & 15) + "); a claim bank must be UTF-8 text";
+    nlohmann::json guess = nlohmann::json::parse(replace_invalid_utf8(line), nullptr, false);
+    if (guess.is_object() && guess.contains("id")) return claim_line_error(line_no, file, msg, &guess.at("id"));
+    return claim_line_error(line_no, file, msg);
+  }
   try {
     j = nlohmann::json::parse(line);
   } catch (const nlohmann::json::exception& e) {
@@ -525,8 +568,10 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
   }
   if (!j.is_object()) return error("expected a JSON object per line");
   if (j.contains("id")) out["id"] = j.at("id");
-  if (!j.contains("kind") || !j.at("kind").is_string())
+  if (!j.contains("kind"))
     return error("missing field 'kind' (one of equal, limit, antiderivative, series_first_order, solves_ode)");
+  if (!j.at("kind").is_string())
+    return error("field 'kind' must be a string (one of equal, limit, antiderivative, series_first_order, solves_ode)");
   std::string kind = j.at("kind").get<std::string>();
   static const std::vector<std::string> kinds{"equal", "limit", "antiderivative", "series_first_order", "solves_ode"};
   if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())

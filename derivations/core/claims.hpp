@@ -49,4 +49,9 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
 nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
                                         const ProveOptions& opt = {});
 
+// The result of a line that is not a claim at all (e.g. longer than the line limit):
+// {"id" (when known), "line", "verdict": "error", "error": "file:N: error: message"}.
+nlohmann::ordered_json claim_line_error(int line_no, const std::string& file, const std::string& message,
+                                        const nlohmann::json* id = nullptr);
+
 }  // namespace dc

@@ -36,6 +36,16 @@ bool is_ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <=
 bool is_ident_char(char c) { return is_ident_start(c) || (c >= '0' && c <= '9') || c == '_'; }
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+// Bytes of the UTF-8 character starting at t[i] (1 for a byte that starts none), so messages
+// never quote half a character.
+std::size_t utf8_length(const std::string& t, std::size_t i) {
+  unsigned char c = static_cast<unsigned char>(t[i]);
+  std::size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 1;
+  std::size_t k = 1;
+  while (k < n && i + k < t.size() && (static_cast<unsigned char>(t[i + k]) & 0xC0) == 0x80) ++k;
+  return k;
+}
+
 std::string join(const std::vector<std::string>& v, const std::string& sep) {
   std::string out;
   for (std::size_t i = 0; i < v.size(); ++i) out += (i ? sep : "") + v[i];
@@ -94,6 +104,15 @@ class Reader {
     collect_labels();
     for (const auto& st : statements_) statement(st);
     check_assumptions();
+    if (d_.steps.empty()) {
+      // A file without steps checks nothing; passing it as "0 steps" would hide a wrong file
+      // (an empty one, a truncated one, a file of another format).
+      std::string what = d_.source.text.empty() ? "the file is empty"
+                         : statements_.empty() ? "the file has only comments and blank lines"
+                                               : "the file declares symbols but has no step";
+      fail({file(), 0, 0}, "no steps (" + what + "); a derivation needs at least one step '[(TAG)] LABEL: CLAIM' "
+                           "with an indented 'by RULE' line");
+    }
     return std::move(d_);
   }
 
@@ -104,6 +123,7 @@ class Reader {
   std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
   std::map<std::string, std::size_t> defined_;   // labels defined so far -> step index
   std::optional<SourcePos> first_assume_;
+  std::string current_label_;                    // the step being read
 
   const std::string& file() const { return d_.source.name; }
 
@@ -257,7 +277,7 @@ class Reader {
     if (!parse_header(l, st.first_line, h, false)) {
       // A line starting with '(' is a tagged step: report what is wrong with its header.
       if (l[0] == '(') parse_header(l, st.first_line, h, true);
-      std::string shown = w.empty() ? std::string(1, l[0]) : w;
+      std::string shown = w.empty() ? l.substr(0, utf8_length(l, 0)) : w;
       fail({file(), st.first_line, 1},
            "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
            "or a step '[(TAG)] LABEL: CLAIM'",
@@ -300,7 +320,11 @@ class Reader {
     std::size_t e = s.text.find('\n', p);
     std::string t = s.text.substr(p, e == std::string::npos ? std::string::npos : e - p);
     while (!t.empty() && is_space(t.back())) t.pop_back();
-    if (t.size() > 30) t = t.substr(0, 30) + "...";
+    if (t.size() > 30) {
+      std::size_t cut = 0;
+      while (cut < t.size() && cut + utf8_length(t, cut) <= 30) cut += utf8_length(t, cut);
+      t = t.substr(0, cut) + "...";
+    }
     return t;
   }
 
@@ -516,6 +540,7 @@ class Reader {
                             std::to_string(prev.pos.col) + ")",
            static_cast<int>(h.label.size()));
     }
+    current_label_ = h.label;
     // Parts: the claim, then attribute lines (by/note/erratum/stable), each with continuations.
     struct Part { std::string kw; Span span; SourcePos kw_pos; };
     std::vector<Part> parts;
@@ -656,6 +681,7 @@ class Reader {
     collect_identifiers(rhs, ids);
     for (const Node* id : ids)
       if (id->text == name) fail(id->pos, "the definition of '" + name + "' refers to itself", id->length);
+    check_definition_cycle(name, rhs);
     // Defined earlier by another definition step?
     for (const auto& s : d_.steps)
       if (s.rule.name == "definition" && !s.claim.sides.empty() &&
@@ -695,9 +721,54 @@ class Reader {
     d_.symbols.declare(std::move(info));
   }
 
+  // A symbol declared with `symbol` may be defined after a definition that uses it, so
+  // definitions can form a cycle (u = v + 1, then v = u - 1), which no expansion ends. Refuse
+  // the definition that closes one, naming the whole cycle.
+  void check_definition_cycle(const std::string& name, const Node& rhs) {
+    std::map<std::string, const Step*> by_name;
+    for (const auto& s : d_.steps)
+      if (s.rule.name == "definition" && s.claim.sides.size() >= 2 &&
+          (s.claim.sides[0].kind == NodeKind::Symbol || s.claim.sides[0].kind == NodeKind::Call))
+        by_name.emplace(s.claim.sides[0].text, &s);
+    // Depth-first search from the names the new body uses; path holds the chain so far.
+    std::set<std::string> done;
+    std::vector<const Step*> path;
+    std::function<bool(const std::string&)> leads_back = [&](const std::string& n) -> bool {
+      if (n == name) return true;
+      auto it = by_name.find(n);
+      if (it == by_name.end() || !done.insert(n).second) return false;
+      path.push_back(it->second);
+      std::vector<const Node*> ids;
+      collect_identifiers(it->second->claim.sides.back(), ids);
+      for (const Node* id : ids)
+        if (leads_back(id->text)) return true;
+      path.pop_back();
+      return false;
+    };
+    std::vector<const Node*> ids;
+    collect_identifiers(rhs, ids);
+    for (const Node* id : ids) {
+      path.clear();
+      if (!leads_back(id->text)) continue;
+      std::string chain = name, where;
+      for (const Step* s : path) {
+        chain += " -> " + s->claim.sides[0].text;
+        where += std::string(where.empty() ? "" : ", ") + "'" + s->claim.sides[0].text +
+                 (where.empty() ? "' is defined by step '" : "' by step '") + s->label +
+                 "' at " + std::to_string(s->pos.line) + ":" + std::to_string(s->pos.col);
+      }
+      chain += " -> " + name;
+      fail(id->pos, "circular definition: " + chain + " (" + where + "); a definition may not depend on itself",
+           id->length);
+    }
+  }
+
   // --- the rule line -------------------------------------------------------------------
   void check_ref(const std::string& label, const SourcePos& p) {
     if (defined_.count(label)) return;
+    if (label == current_label_)
+      fail(p, "step '" + label + "' refers to itself; a step may only use earlier steps",
+           static_cast<int>(label.size()));
     auto it = all_labels_.find(label);
     if (it != all_labels_.end())
       fail(p, "step '" + label + "' is defined later (at " + std::to_string(it->second.line) + ":" +
@@ -1027,7 +1098,7 @@ const Step* Derivation::find(const std::string& label) const {
 }
 
 Derivation parse_derivation(SourceText source) {
-  std::string name = source.name;
+  source.text = normalize_text(std::move(source.text));
   SourceText copy = source;
   try {
     return Reader(std::move(source)).run();

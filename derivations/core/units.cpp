@@ -102,15 +102,28 @@ Dimension from_exps(const std::array<int, Dimension::kBase>& e) {
   return d;
 }
 
-// An integer exponent written as a literal, optionally negated: 2, -1, (-2).
-bool integer_exponent(const Node& n, int& out) {
+// The largest unit exponent accepted (docs/format.md): kg^999 is the most any unit needs and
+// more. Larger literals are refused with this limit, not mistaken for non-integers.
+constexpr int kMaxUnitExponent = 999;
+
+// An integer exponent written as a literal, optionally negated: 2, -1, (-2). Sets too_large
+// for an integer literal beyond kMaxUnitExponent.
+bool integer_exponent(const Node& n, int& out, bool& too_large) {
   if (n.kind == NodeKind::Neg) {
-    if (!integer_exponent(n.args[0], out)) return false;
+    if (!integer_exponent(n.args[0], out, too_large)) return false;
     out = -out;
     return true;
   }
-  if (n.kind != NodeKind::Number || n.text.find('.') != std::string::npos || n.text.size() > 3) return false;
-  out = std::stoi(n.text);
+  if (n.kind != NodeKind::Number || n.text.empty()) return false;
+  for (char c : n.text)
+    if (c < '0' || c > '9') return false;   // 2.5, 1e3
+  std::size_t first = n.text.find_first_not_of('0');
+  std::string digits = first == std::string::npos ? "0" : n.text.substr(first);
+  if (digits.size() > 3) {
+    too_large = true;
+    return false;
+  }
+  out = std::stoi(digits);
   return true;
 }
 
@@ -130,8 +143,15 @@ Dimension parse_unit(const Node& n) {
     case NodeKind::Pow: {
       Dimension base = parse_unit(n.args[0]);
       int p = 0;
-      if (!integer_exponent(n.args[1], p))
+      bool too_large = false;
+      if (!integer_exponent(n.args[1], p, too_large)) {
+        if (too_large)
+          throw InputError(n.args[1].pos,
+                           "unit exponent '" + to_text(n.args[1]) + "' is too large: a unit exponent is an integer from -" +
+                               std::to_string(kMaxUnitExponent) + " to " + std::to_string(kMaxUnitExponent),
+                           n.args[1].length);
         throw InputError(n.args[1].pos, "a unit exponent must be an integer such as 2 or -1", n.args[1].length);
+      }
       Dimension out;
       if (!base.pow(p, 1, out))
         throw InputError(n.args[1].pos, "unit exponent " + std::to_string(p) + " is too large", n.args[1].length);
