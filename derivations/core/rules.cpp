@@ -156,6 +156,8 @@ bool has_any(const ex& e, const std::vector<ex>& syms) {
 
 // An equation E = 0 with an optional hint: the symbol the author wrote alone on its left.
 struct Eq {
+  Eq(ex e_, ex hint_ = ex(), std::string from_ = {}, std::vector<std::string> also_ = {})
+      : e(std::move(e_)), hint(std::move(hint_)), from(std::move(from_)), also(std::move(also_)) {}
   ex e;
   ex hint;
   std::string from;                // label, for messages
