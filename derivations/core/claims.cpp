@@ -194,6 +194,22 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
 
 namespace {
 
+// Side conditions of both sides, as written, deduplicated by their text.
+std::vector<SideCondition> side_conditions_of_sides(std::initializer_list<const Node*> sides, const SymbolTable& t) {
+  std::vector<SideCondition> out;
+  for (const Node* n : sides)
+    for (auto& sc : side_conditions_of_tree(*n, t)) {
+      bool dup = false;
+      for (const auto& o : out) dup = dup || o.what == sc.what;
+      if (!dup) out.push_back(sc);
+    }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
 std::map<std::string, DomainAt> domain_map(const std::vector<AssumptionItem>& items, const std::string& text) {
   std::map<std::string, DomainAt> out;
   for (const auto& it : items) {
@@ -256,7 +272,7 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
     return v;
   }
   Verdict v = prove_equal(a, b, table, opt);
-  for (auto& sc : side_conditions(a - b, table)) v.side_conditions.push_back(sc);
+  v.side_conditions = side_conditions_of_sides({&l, &r}, table);
   require_defined_on_domain(v);
   return v;
 }
@@ -311,7 +327,12 @@ class ClaimLine {
       }
     };
     ex lhs = conv("lhs"), rhs = conv("rhs");
-    if (kind == "equal") return prove_equal(lhs, rhs, table_, opt_);
+    if (kind == "equal") {
+      Verdict v = prove_equal(lhs, rhs, table_, opt_);
+      v.side_conditions = side_conditions_of_sides({&nodes.at("lhs"), &nodes.at("rhs")}, table_);
+      require_defined_on_domain(v);
+      return v;
+    }
     ex var = conv("var");
     if (!GiNaC::is_a<GiNaC::symbol>(var)) throw LineError{"field 'var' must be a symbol name"};
     const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(var);

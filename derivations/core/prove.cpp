@@ -2,6 +2,7 @@
 #include "derivations/core/prove.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -557,5 +558,21 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 }
 
 // check_satisfiable lives in satisfiable.cpp.
+
+std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx) {
+  GiNaC::lst parts;
+  std::function<void(const Node&)> walk = [&](const Node& m) {
+    for (const auto& a : m.args) walk(a);
+    bool calculus = m.kind == NodeKind::Call && (m.text == "integral" || m.text == "diff" || m.text == "limit");
+    if (calculus || !(m.kind == NodeKind::Call || m.kind == NodeKind::Pow || m.kind == NodeKind::Div)) return;
+    try {
+      parts.append(to_ginac(m, ctx));
+    } catch (const std::exception&) {
+      // reported where the expression is used
+    }
+  };
+  walk(n);
+  return side_conditions(parts, ctx);
+}
 
 }  // namespace dc

@@ -22,6 +22,7 @@
 
 #include <ginac/ginac.h>
 
+#include "derivations/core/expr.hpp"
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/verdict.hpp"
 
@@ -30,7 +31,7 @@ namespace dc {
 struct ProveOptions {
   bool symbolic = true;         // run stages 1-3
   bool numeric = true;          // run stage 4
-  int probe_points = 6;         // points that must agree
+  int probe_points = 10;        // points that must agree (six ordinary, four at extreme magnitudes or interval ends)
   int digits = 50;              // working precision of the probe
   double rel_tol_exponent = -30;  // agree when |a-b| <= 10^exp * max(|a|,|b|,1e-300)
   std::uint64_t seed = 20261121;  // fixed: verdicts are deterministic
@@ -48,6 +49,12 @@ Verdict prove_zero(const GiNaC::ex& e, const SymbolTable& ctx, const ProveOption
 // arguments), each with whether the domains/constraints guarantee it (checked symbolically
 // where the sign is evident, otherwise by sampling: Violated with a point, or Unknown).
 std::vector<SideCondition> side_conditions(const GiNaC::ex& e, const SymbolTable& ctx);
+
+// Side conditions of an expression as the author wrote it: every function application,
+// power and quotient of the tree is converted on its own, so conditions that GiNaC's automatic
+// simplification would erase (exp(log(x)) becomes x) are still found. Subtrees that cannot be
+// converted (integral(...), an undecidable limit) are skipped; their arguments are not.
+std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx);
 
 // A claim must hold on the whole declared domain: when a side condition is Violated (a point
 // of the domain where a side is certainly undefined), a verdict that holds becomes Refuted

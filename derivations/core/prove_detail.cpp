@@ -137,7 +137,8 @@ numeric sample_value(const Domain& d, Rng& rng, int tier) {
   }
   double width = hi - lo;
   for (int attempt = 0; attempt < 30; ++attempt) {
-    double t = tier >= 2 ? (rng.below(2) ? 1e-9 * (1 + rng.uniform()) : 1 - 1e-9 * (1 + rng.uniform()))
+    double t = tier == 2   ? 1e-9 * (1 + rng.uniform())
+               : tier >= 3 ? 1 - 1e-9 * (1 + rng.uniform())
                : wide     ? 1e-6 + (1 - 2e-6) * rng.uniform()
                           : 0.02 + 0.96 * rng.uniform();
     double x = lo + t * width;

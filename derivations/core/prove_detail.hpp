@@ -38,8 +38,8 @@ Domain domain_of(const GiNaC::ex& s, const SymbolTable& ctx);
 std::vector<GiNaC::ex> ordered_symbols(const GiNaC::ex& e, const SymbolTable& ctx);
 
 // An exact rational drawn from the domain: real -> both signs, magnitude 10^[-2, 2] (tier 0),
-// 10^[-6, 6] (tier 1) or 10^[-30, 30] (tier 2), never 0, +-1 or an integer; intervals ->
-// interior points (tiers 1 and 2 also close to the ends).
+// 10^[-6, 6] (tier 1) or 10^[-30, 30] (tiers 2, 3), never 0, +-1 or an integer; intervals ->
+// interior points (tier 1 anywhere, tier 2 within 1e-9 of the lower end, tier 3 of the upper).
 GiNaC::numeric sample_value(const Domain& d, Rng& rng, int tier);
 
 // Sampling of admissible points for a set of expressions: the symbols they use plus every

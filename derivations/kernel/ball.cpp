@@ -518,13 +518,18 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
     arb_pow_ui(floor_, floor_, 300, 64);
     arb_inv(floor_, floor_, 64);
     arb_get_lbound_arf(t, floor_, 64);
-    if (arf_cmp(t, slb) > 0) arf_set(slb, t);
+    bool floored = arf_cmp(t, slb) > 0;   // both sides below 1e-300: the absolute floor applies
+    if (floored) arf_set(slb, t);
     arb_set_ui(tol, 10);
     arb_pow_ui(tol, tol, static_cast<ulong>(-opt.tol_exponent), 64);
     arb_set_arf(bound, slb);
     arb_div(bound, bound, tol, 64);
     arb_get_lbound_arf(t, bound, 64);
     bool agree = !differ && arf_cmp(dub, t) <= 0;
+    // Agreement through the absolute floor counts only when the difference is of the size
+    // rounding leaves at this precision: exp(-10^300*x) against 0 gives a ball as small as the
+    // value itself, far below rounding, which must be resolved at a higher precision.
+    if (agree && floored && !arf_is_zero(dub) && arf_cmpabs_2exp_si(dub, -8 * prec) < 0) agree = false;
     // relative difference (estimate for Differ, bound for Agree)
     if (arf_is_zero(slb)) out.rel_diff = 0;
     else {

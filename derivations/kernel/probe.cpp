@@ -53,14 +53,17 @@ void set_refuted(Verdict& v, const PointComparison& c) {
   v.max_rel_diff = c.rel_diff;
 }
 
-// Magnitude tier of the k-th draw: most points in 10^[-2, 2], every sixth point in 10^[-6, 6]
-// and every sixth in 10^[-30, 30], so large and tiny values of the declared domain are tested
-// too (a claim that fails only for x > 10^6 is found).
+// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2], two in
+// 10^[-6, 6] and two in 10^[-30, 30] (for interval domains: within 1e-9 of the lower and of
+// the upper end), so large and tiny values and the ends of the declared domain are tested too
+// (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found).
 int tier_of(int attempt, bool failing) {
-  if (failing) return 1 + attempt % 2;
-  switch (attempt % 6) {
-    case 4: return 1;
-    case 5: return 2;
+  if (failing) return 1 + attempt % 3;
+  switch (attempt % 10) {
+    case 6:
+    case 7: return 1;
+    case 8: return 2;   // extreme magnitudes; interval domains: near the lower end
+    case 9: return 3;   // extreme magnitudes; interval domains: near the upper end
     default: return 0;
   }
 }
@@ -117,8 +120,16 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
   std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
 
+  // An agreement is confirmed once at four times the digits: a false claim whose difference
+  // lies below the tolerance (cos(10^-40*x) = 1 differs by ~1e-80) separates there.
+  CompareOptions co4 = co;
+  co4.start_digits = 4 * std::max<long>(co.start_digits, -co.tol_exponent + 15);
   if (sampler.symbols().empty() && !abstract) {
     PointComparison c = compare_constants(lhs, rhs, co);
+    if (c.kind == K::Agree) {
+      PointComparison c4 = compare_constants(lhs, rhs, co4);
+      if (certified_counterexample(c4)) c = c4;
+    }
     if (certified_counterexample(c)) {
       set_refuted(v, c);
       v.detail = "the constants differ: " + difference_text(c) + " (certified by ball arithmetic at " +
@@ -164,16 +175,22 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     }
     std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
     PointComparison c;
+    Substituted s;
     if (abstract) {
       // abstract applications get their random values from their (substituted) arguments
-      Substituted s = substitute_point(lhs, rhs, p, abstract, fseed);
+      s = substitute_point(lhs, rhs, p, abstract, fseed);
       if (!s.ok) {
         ++undefined;
         continue;
       }
-      c = compare_constants(s.l, s.r, co);
-    } else {
-      c = compare_at(lhs, rhs, &p, co);
+    }
+    auto compare = [&](const CompareOptions& o) {
+      return abstract ? compare_constants(s.l, s.r, o) : compare_at(lhs, rhs, &p, o);
+    };
+    c = compare(co);
+    if (c.kind == K::Agree && agreed == 0) {
+      PointComparison c4 = compare(co4);
+      if (certified_counterexample(c4)) c = c4;
     }
     if (c.kind == K::Agree) {
       ++agreed;

@@ -96,9 +96,22 @@ TEST_CASE("the adversarial corpus is well formed: >= 120 claims, every class wit
   }
 }
 
-// [!mayfail]: the kernel does not yet meet the contract (issue 8); the failures are the known
-// false accepts listed in the report. Remove the tag when the rigorous kernel lands.
-TEST_CASE("adversarial corpus: zero false accepts, zero false refutes", "[adversarial][!mayfail]") {
+namespace {
+
+// Known gaps, each a false claim still accepted. Listed by id so that the test fails on any
+// other false accept, and on a listed one that no longer is accepted (then remove it here).
+//  - as_*: the claim fails only in a thin slice that an assumption cuts out of the domain
+//    (x > 1 - 1e-9 with abs(x - 1) = x - 1); the probe does not yet sample the boundaries of
+//    assumptions, only of declared intervals.
+//  - bad_choose_root: a nonlinear `solve` substitutes the claimed root back and says that other
+//    roots are not excluded; y = w from y^2 = w^2 (y real) is accepted with that note.
+const std::set<std::string> kKnownGaps = {"as_abs_near_one", "as_tinier_negative_slice", "as_chain_allows_negative",
+                                          "bad_choose_root"};
+
+}  // namespace
+
+TEST_CASE("adversarial corpus: zero false accepts, zero false refutes", "[adversarial]") {
+  std::set<std::string> gaps_seen;
   std::vector<std::string> lines = corpus_lines();
   Tally t;
   int line_no = 0;
@@ -117,7 +130,8 @@ TEST_CASE("adversarial corpus: zero false accepts, zero false refutes", "[advers
     if (verdict == "error") {
       t.errors.push_back(tag + ": " + r.value("error", ""));
     } else if (expect == "false" && accepted) {
-      t.false_accepts.push_back(tag);
+      if (kKnownGaps.count(id)) gaps_seen.insert(id);
+      else t.false_accepts.push_back(tag);
     } else if (expect == "true" && verdict == "refuted") {
       t.false_refutes.push_back(tag + ": " + r.value("detail", ""));
     } else if (verdict == "undecided") {
@@ -131,9 +145,11 @@ TEST_CASE("adversarial corpus: zero false accepts, zero false refutes", "[advers
   CHECK(t.errors.empty());
   CHECK(t.false_refutes.empty());
   REQUIRE(t.false_accepts.empty());
+  for (const auto& id : kKnownGaps)
+    if (id.rfind("as_", 0) == 0) CHECK(gaps_seen.count(id) == 1);   // fixed? remove it from kKnownGaps
 }
 
-TEST_CASE("adversarial rule traps: bad_* steps never hold, ok_* steps are never refuted", "[adversarial][rules][!mayfail]") {
+TEST_CASE("adversarial rule traps: bad_* steps never hold, ok_* steps are never refuted", "[adversarial][rules]") {
   std::string file = GENERATE(as<std::string>{}, "solve_root_domain", "rewrite_positive_only", "integrate_references");
   CAPTURE(file);
   dc::Derivation d = dc::load_derivation(data("adversarial/" + file + ".dc"));
@@ -155,7 +171,7 @@ TEST_CASE("adversarial rule traps: bad_* steps never hold, ok_* steps are never 
       continue;
     }
     bool holds = r.verdict.holds();
-    if (is_bad && holds) t.false_accepts.push_back(tag);
+    if (is_bad && holds && !kKnownGaps.count(s.label)) t.false_accepts.push_back(tag);
     if (is_ok && r.verdict.kind == dc::VerdictKind::Refuted) t.false_refutes.push_back(tag + ": " + r.verdict.detail);
     if (r.verdict.kind == dc::VerdictKind::Undecided)
       (is_ok ? t.undecided_true : t.undecided_false).push_back(tag + ": " + r.verdict.reason);
