@@ -3,57 +3,9 @@
 // assumptions with large values are accepted. Runs the built binary DERIVCHECK_CLI.
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
+#include "cli_run.hpp"
 
-#include <array>
-#include <cstdio>
-#include <fstream>
-#include <sstream>
-#include <string>
-#include <sys/wait.h>
-#include <vector>
-
-namespace {
-
-std::string src(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/" + rel; }
-
-std::string quote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
-  }
-  return out + "'";
-}
-
-struct Run {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-Run run(const std::vector<std::string>& args) {
-  static int counter = 0;
-  std::string errfile = "derivcheck_cli_assume_stderr_" + std::to_string(::getpid()) + "_" + std::to_string(++counter) + ".txt";
-  std::string cmd = quote(DERIVCHECK_CLI);
-  for (const auto& a : args) cmd += " " + quote(a);
-  cmd += " 2>" + errfile;
-  Run r;
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::array<char, 4096> buf{};
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(errfile);
-  std::stringstream ss;
-  ss << e.rdbuf();
-  r.err = ss.str();
-  std::remove(errfile.c_str());
-  return r;
-}
-
-}  // namespace
+using namespace cli_test;
 
 TEST_CASE("equal --assume: a constant-false assumption is exit 2 at its position", "[cli][assumptions]") {
   struct Case {
