@@ -182,9 +182,58 @@ PointSampler::PointSampler(const std::vector<ex>& exprs, const SymbolTable& ctx)
     if (used[i]) cons_.push_back(&all[i]);
 }
 
+namespace {
+
+// Move one symbol of the constraint c (linear in it, with the other symbols at their values in
+// p) just inside the constraint's boundary: value t + dir * |t| * 10^[-15, -1] (or an absolute
+// 10^[-30, -1] when t = 0). Claims that fail only in a thin slice the assumption leaves open
+// (x > 1 - 1e-9 with abs(x - 1) = x - 1) are found there.
+void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const std::vector<Domain>& doms,
+                      GiNaC::exmap& p, Rng& rng) {
+  ex d;
+  try {
+    d = (c.lhs - c.rhs).expand();
+  } catch (const std::exception&) {
+    return;
+  }
+  for (std::size_t i = 0; i < syms.size(); ++i) {
+    const GiNaC::symbol& sym = GiNaC::ex_to<GiNaC::symbol>(syms[i]);
+    if (!d.has(sym) || !d.is_polynomial(sym) || d.degree(sym) != 1) continue;
+    GiNaC::exmap others = p;
+    others.erase(syms[i]);
+    ex a, b;
+    try {
+      a = d.coeff(sym, 1).subs(others);
+      b = d.coeff(sym, 0).subs(others);
+    } catch (const std::exception&) {
+      continue;
+    }
+    if (!GiNaC::is_a<numeric>(a) || !GiNaC::is_a<numeric>(b)) continue;
+    const numeric& an = GiNaC::ex_to<numeric>(a);
+    if (an.is_zero() || !an.is_rational() || !GiNaC::ex_to<numeric>(b).is_rational()) continue;
+    numeric t = -GiNaC::ex_to<numeric>(b) / an;
+    // the side of the boundary where a*s + b has the constraint's sign
+    using Op = Constraint::Op;
+    int want = (c.op == Op::Gt || c.op == Op::Ge) ? 1 : (c.op == Op::Lt || c.op == Op::Le) ? -1 : (rng.below(2) ? 1 : -1);
+    int dir = an.is_positive() ? want : -want;
+    double e = t.is_zero() ? -30.0 + 29.0 * rng.uniform() : -15.0 + 14.0 * rng.uniform();
+    numeric off = rational_near(std::pow(10.0, e), std::pow(10.0, e) * 1e-3, rng);
+    if (!t.is_zero()) off *= GiNaC::abs(t);
+    numeric v = t + dir * off;
+    if (!doms[i].contains(v)) continue;
+    p[syms[i]] = v;
+    return;
+  }
+}
+
+}  // namespace
+
 GiNaC::exmap PointSampler::draw(Rng& rng, int tier, bool* admissible) const {
   GiNaC::exmap p;
-  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, tier);
+  // tier 4: an ordinary point moved to the boundary of one of the assumptions
+  int base = tier == 4 ? 0 : tier;
+  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, base);
+  if (tier == 4 && !cons_.empty()) move_to_boundary(*cons_[rng.below(cons_.size())], syms_, doms_, p, rng);
   bool ok = true;
   for (const Constraint* c : cons_)
     if (!c->holds_at(p)) {

@@ -53,13 +53,15 @@ void set_refuted(Verdict& v, const PointComparison& c) {
   v.max_rel_diff = c.rel_diff;
 }
 
-// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2], two in
+// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2] (one of them moved
+// next to the boundary of an assumption when there is one), two in
 // 10^[-6, 6] and two in 10^[-30, 30] (for interval domains: within 1e-9 of the lower and of
 // the upper end), so large and tiny values and the ends of the declared domain are tested too
 // (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found).
 int tier_of(int attempt, bool failing) {
   if (failing) return 1 + attempt % 3;
   switch (attempt % 10) {
+    case 5: return 4;   // next to the boundary of an assumption (an ordinary point without one)
     case 6:
     case 7: return 1;
     case 8: return 2;   // extreme magnitudes; interval domains: near the lower end
