@@ -346,20 +346,20 @@ Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const Prov
 // were declared positive? Returns "holds if a, b > 0: declare a, b positive", or "".
 std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
                              const Verdict& refuted) {
-  std::vector<std::string> names;
+  bool negative_real = false;   // the counterexample uses a negative value of a real symbol
   for (const auto& [name, value] : refuted.point) {
     const SymbolInfo* info = ctx.find(name);
-    if (info && !info->is_function && info->domain.kind == Domain::Kind::Real && value.rfind('-', 0) == 0)
-      names.push_back(name);
+    negative_real = negative_real || (info && !info->is_function && info->domain.kind == Domain::Kind::Real &&
+                                      value.rfind('-', 0) == 0);
   }
-  if (names.empty()) return "";
-  SymbolTable narrowed = ctx;
-  // every real symbol of the claim, not only the negative ones of this point
-  names.clear();
+  if (!negative_real) return "";
+  // try every real symbol of the claim positive, not only the negative ones of this point
+  std::vector<std::string> names;
   for (const auto& s : d::ordered_symbols(lhs - rhs, ctx)) {
     const SymbolInfo* info = ctx.find(GiNaC::ex_to<GiNaC::symbol>(s));
     if (info && info->domain.kind == Domain::Kind::Real) names.push_back(info->name);
   }
+  SymbolTable narrowed = ctx;
   for (const auto& n : names) narrowed.narrow_domain(n, Domain::positive());
   if (!kernel::probe(lhs, rhs, narrowed, opt, "").holds()) return "";
   std::string list;
@@ -375,6 +375,7 @@ void require_defined_on_domain(Verdict& v) {
     if (sc.status != SideCondition::Status::Violated) continue;
     v.kind = VerdictKind::Refuted;
     v.method += " + side condition";
+    v.points = 0;   // the agreeing points of the verdict it replaces are not evidence here
     v.point = sc.point;
     v.lhs_value.clear();
     v.rhs_value.clear();

@@ -467,12 +467,8 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
   using K = PointComparison::Kind;
   PointComparison out;
   const long prec = std::max(l.prec_bits, r.prec_bits) + 16;
-  struct {
-    long tol_exponent;
-    int sig;
-  } opt{tol_exponent, sig};
-  out.lhs_text = l.text(opt.sig);
-  out.rhs_text = r.text(opt.sig);
+  out.lhs_text = l.text(sig);
+  out.rhs_text = r.text(sig);
   auto certified_undefined = [](const Ball& b) {
     return b.status == BallStatus::NotReal || b.status == BallStatus::Pole;
   };
@@ -521,7 +517,7 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
     bool floored = arf_cmp(t, slb) > 0;   // both sides below 1e-300: the absolute floor applies
     if (floored) arf_set(slb, t);
     arb_set_ui(tol, 10);
-    arb_pow_ui(tol, tol, static_cast<ulong>(-opt.tol_exponent), 64);
+    arb_pow_ui(tol, tol, static_cast<ulong>(-tol_exponent), 64);
     arb_set_arf(bound, slb);
     arb_div(bound, bound, tol, 64);
     arb_get_lbound_arf(t, bound, 64);
@@ -546,9 +542,9 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
     if (differ) {
       out.kind = K::Differ;
       // enough digits to show the difference
-      for (int sig = opt.sig; sig <= 200 && out.lhs_text == out.rhs_text; sig += 10) {
-        out.lhs_text = l.text(sig);
-        out.rhs_text = r.text(sig);
+      for (int s = sig; s <= 200 && out.lhs_text == out.rhs_text; s += 10) {
+        out.lhs_text = l.text(s);
+        out.rhs_text = r.text(s);
       }
       return out;
     }
