@@ -275,12 +275,21 @@ Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const Prov
   ex diff = lhs - rhs;
   double est = estimate_expanded_terms(lhs) + estimate_expanded_terms(rhs);
   if (est > static_cast<double>(opt.max_terms)) {
+    // Too big to expand: the symbolic stages are skipped, the kernel's probe (which evaluates
+    // the sides as written) still decides where it can.
+    std::ostringstream os;
+    os << "expansion would exceed " << sci(static_cast<double>(opt.max_terms)) << " terms (estimated " << sci(est)
+       << "), so the symbolic stages were skipped";
+    if (opt.numeric) {
+      Verdict p = kernel::probe(lhs, rhs, ctx, opt, "(not expanded)");
+      if (p.kind != VerdictKind::Undecided) return p;
+      p.reason = os.str() + "; " + p.reason;
+      p.detail = p.reason;
+      return p;
+    }
     v.kind = VerdictKind::Undecided;
     v.method = "normal";
-    std::ostringstream os;
-    os << "resource limit: expansion would exceed " << sci(static_cast<double>(opt.max_terms))
-       << " terms (estimated " << sci(est) << ")";
-    v.reason = os.str();
+    v.reason = "resource limit: " + os.str();
     v.detail = v.reason;
     return v;
   }
