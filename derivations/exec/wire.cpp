@@ -1,78 +1,61 @@
 #include "derivations/exec/wire.hpp"
 
-#include <cstdint>
 #include <cstring>
 #include <stdexcept>
 
 namespace dc::exec {
+
+void Writer::u64(std::uint64_t v) { out_.append(reinterpret_cast<const char*>(&v), 8); }
+void Writer::f64(double v) {
+  std::uint64_t u;
+  std::memcpy(&u, &v, 8);
+  u64(u);
+}
+void Writer::str(const std::string& s) {
+  u64(s.size());
+  out_ += s;
+}
+void Writer::pairs(const std::vector<std::pair<std::string, std::string>>& p) {
+  u64(p.size());
+  for (const auto& [a, b] : p) {
+    str(a);
+    str(b);
+  }
+}
+
+std::uint64_t Reader::u64() {
+  need(8);
+  std::uint64_t v;
+  std::memcpy(&v, in_.data() + at_, 8);
+  at_ += 8;
+  return v;
+}
+double Reader::f64() {
+  std::uint64_t u = u64();
+  double v;
+  std::memcpy(&v, &u, 8);
+  return v;
+}
+std::string Reader::str() {
+  std::uint64_t n = u64();
+  need(n);
+  std::string s = in_.substr(at_, n);
+  at_ += n;
+  return s;
+}
+std::vector<std::pair<std::string, std::string>> Reader::pairs() {
+  std::vector<std::pair<std::string, std::string>> p(u64());
+  for (auto& [a, b] : p) {
+    a = str();
+    b = str();
+  }
+  return p;
+}
+void Reader::need(std::uint64_t n) const {
+  if (n > in_.size() - at_) throw std::runtime_error("truncated result from a worker process");
+}
+
 namespace {
-
-class Writer {
- public:
-  void u64(std::uint64_t v) { out_.append(reinterpret_cast<const char*>(&v), 8); }
-  void i64(std::int64_t v) { u64(static_cast<std::uint64_t>(v)); }
-  void f64(double v) {
-    std::uint64_t u;
-    std::memcpy(&u, &v, 8);
-    u64(u);
-  }
-  void str(const std::string& s) {
-    u64(s.size());
-    out_ += s;
-  }
-  void pairs(const std::vector<std::pair<std::string, std::string>>& p) {
-    u64(p.size());
-    for (const auto& [a, b] : p) {
-      str(a);
-      str(b);
-    }
-  }
-  std::string take() { return std::move(out_); }
-
- private:
-  std::string out_;
-};
-
-class Reader {
- public:
-  explicit Reader(const std::string& in) : in_(in) {}
-  std::uint64_t u64() {
-    need(8);
-    std::uint64_t v;
-    std::memcpy(&v, in_.data() + at_, 8);
-    at_ += 8;
-    return v;
-  }
-  std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
-  double f64() {
-    std::uint64_t u = u64();
-    double v;
-    std::memcpy(&v, &u, 8);
-    return v;
-  }
-  std::string str() {
-    std::uint64_t n = u64();
-    need(n);
-    std::string s = in_.substr(at_, n);
-    at_ += n;
-    return s;
-  }
-  std::vector<std::pair<std::string, std::string>> pairs() {
-    std::vector<std::pair<std::string, std::string>> p(u64());
-    for (auto& [a, b] : p) {
-      a = str();
-      b = str();
-    }
-    return p;
-  }
-
- private:
-  void need(std::uint64_t n) const {
-    if (n > in_.size() - at_) throw std::runtime_error("truncated result from a worker process");
-  }
-  const std::string& in_;
-  std::size_t at_ = 0;
-};
 
 void put(Writer& w, const InputError& e) {
   w.str(e.pos().file);
