@@ -127,7 +127,7 @@ TEST_CASE("budget flags: malformed values are input errors", "[cli][budgets][err
   }
 }
 
-TEST_CASE("--jobs: the report is byte-identical for any number of workers", "[cli][jobs]") {
+TEST_CASE("jobs: the report is byte-identical for any number of workers", "[cli][jobs]") {
   for (const auto& args : std::vector<std::vector<std::string>>{
            {"check", src("derivations/handout9")},
            {"check", src("derivations/handout9"), "--json"},
@@ -145,7 +145,7 @@ TEST_CASE("--jobs: the report is byte-identical for any number of workers", "[cl
   }
 }
 
-TEST_CASE("--shard and merge: the merged shards are byte-identical to one run", "[cli][shard]") {
+TEST_CASE("shard and merge: the merged shards are byte-identical to one run", "[cli][shard]") {
   const std::string bank = src("tests/data/corpus.jsonl");
   Run whole = run({"claims", bank, "--no-timings"}, 600);
   std::vector<std::string> parts;
