@@ -175,7 +175,11 @@ struct Pool::Impl {
     std::size_t task = 0;
     Clock::time_point start;
     std::string buf;
+    int tasks_done = 0;
   };
+  // A worker is replaced after this many tasks, so whatever GiNaC's caches keep between tasks
+  // never accumulates towards the memory budget over a long bank.
+  static constexpr int kRecycleAfter = 500;
 
   int jobs;
   Budget budget;
@@ -377,6 +381,7 @@ struct Pool::Impl {
                 }
                 finish(w, std::move(o));
                 if (status != kDone) reap(w);
+                else if (++w.tasks_done >= kRecycleAfter) stop(w, true);
               }
             }
             continue;

@@ -28,10 +28,11 @@ case $shards in '' | *[!0-9]*) echo "claims-parallel: SHARDS must be a positive 
 work=$(mktemp -d "$(dirname "$out")/.claims-parallel.XXXXXX") || exit 4
 trap 'rm -rf "$work"' EXIT INT TERM
 
-# One job per shard; the job log records every shard's exit code.
-parallel --joblog "$work/joblog" "$@" \
-  "$dc" claims "$bank" --shard {}/"$shards" --jobs 1 --no-timings --no-progress '>' "$work/shard-{}.jsonl" \
-  ::: $(seq 1 "$shards")
+# One job per shard. --results stores each shard's standard output in a local file (also
+# when the shard ran on another host over ssh); the job log records every exit code.
+parallel --joblog "$work/joblog" --results "$work/shard-{}.jsonl" "$@" \
+  "$dc" claims "$bank" --shard {}/"$shards" --jobs 1 --no-timings --no-progress \
+  ::: $(seq 1 "$shards") > /dev/null
 
 # Exit codes 0-3 are verdicts; anything else means a shard did not run to the end.
 failed=$(awk 'NR > 1 && ($7 > 3 || $8 != 0) { print $NF }' FS='\t' "$work/joblog")
