@@ -171,3 +171,17 @@ TEST_CASE("claims: a missing file is an input error", "[cli][claims][errors]") {
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("cannot read") != std::string::npos);
 }
+
+TEST_CASE("equal: expressions may start with a minus", "[cli][equal]") {
+  Run a = run({"equal", "x", "-x"});
+  CHECK(a.exit_code == 1);
+  CHECK(a.out.rfind("refuted", 0) == 0);
+  Run b = run({"equal", "-a", "-a", "--json"});
+  CHECK(b.exit_code == 0);
+  CHECK(b.out.find("\"verdict\": \"proved\"") != std::string::npos);
+  Run c = run({"equal", "-(x-1)", "1-x", "--assume", "-x > 0"});
+  CHECK(c.exit_code == 0);
+  Run d = run({"equal", "x", "-y", "--bogus"});
+  CHECK(d.exit_code == 2);
+  CHECK(d.err.find("--bogus") != std::string::npos);
+}
