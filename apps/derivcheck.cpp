@@ -50,7 +50,7 @@ std::vector<std::string> positional_minus(CLI::App& app, int argc, char** argv) 
     if (opt == nullptr && t.rfind("--", 0) != 0 && t.size() > 2)   // -j2: a short option with its value
       opt = sub->get_option_no_throw(t.substr(0, 2));
     bool is_help = name == "-h" || name == "--help";
-    if (opt == nullptr && !is_help && t.rfind("--", 0) == 0) return args;   // CLI11 reports the unknown flag
+    if (opt == nullptr && !is_help && t.rfind("--", 0) == 0) throw CLI::ExtrasError({t});   // an unknown --flag
     if (opt == nullptr && !is_help) {
       moved.push_back(t);
       continue;
