@@ -185,3 +185,22 @@ TEST_CASE("equal: expressions may start with a minus", "[cli][equal]") {
   CHECK(d.exit_code == 2);
   CHECK(d.err.find("--bogus") != std::string::npos);
 }
+
+TEST_CASE("latex: a derivation with a step that does not hold is not emitted unless asked", "[cli][latex]") {
+  std::string out = "derivcheck_latex_refused_" + std::to_string(::getpid()) + ".tex";
+  Run r = run({"latex", src("tests/data/cli/refuted.dc"), "-o", out});
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("refuted.dc:9:1: step 'v1p_wrong' is refuted") != std::string::npos);
+  CHECK(!std::ifstream(out).good());
+  Run a = run({"latex", src("tests/data/cli/refuted.dc"), "-o", out, "--allow-unchecked"});
+  CHECK(a.exit_code == 0);
+  std::ifstream in(out);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  CHECK(ss.str().find("NOT CHECKED: refuted") != std::string::npos);
+  std::remove(out.c_str());
+  // the handout's reported erratum does not block it
+  Run h = run({"latex", src("derivations/handout9"), "-o", "-"});
+  CHECK(h.exit_code == 0);
+  CHECK(h.out.find("NOT CHECKED") == std::string::npos);
+}
