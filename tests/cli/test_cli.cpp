@@ -204,3 +204,12 @@ TEST_CASE("latex: a derivation with a step that does not hold is not emitted unl
   CHECK(h.exit_code == 0);
   CHECK(h.out.find("NOT CHECKED") == std::string::npos);
 }
+
+TEST_CASE("map: a user's files are mapped under their own name, with no invented tests", "[cli][map]") {
+  Run r = run({"map", src("tests/data/cli/refuted.dc")});
+  CHECK(r.exit_code == 0);
+  CHECK(r.out.find("Handout 9") == std::string::npos);
+  CHECK(r.out.find("ctest") == std::string::npos);
+  CHECK(r.out.find("# Derivation map: ") == 0);
+  CHECK(r.out.find("3 steps in 1 file.") != std::string::npos);
+}
