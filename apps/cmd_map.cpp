@@ -83,7 +83,6 @@ static dc::cli::CommandRegistrar reg_map(
         if (!tests->empty()) command += " --tests " + shell_word(*tests);
         if (!title->empty()) command += " --title " + shell_word(*title);
         if (!ctest_prefix->empty()) command += " --ctest-prefix " + shell_word(*ctest_prefix);
-        if (!output->empty()) command += " -o " + shell_word(*output);
         std::string heading = *title;
         if (heading.empty()) {
           heading = "Derivation map:";
