@@ -25,7 +25,12 @@ int run(const EvalOptions& o) {
       o.budget.resolve(),
       [&o](std::ostream& out) {
         const Derivation d = load_derivation(o.file);
-        out << num::eval_formula(d, o.label, o.at, o.digits) << "\n";
+        try {
+          out << num::eval_formula(d, o.label, o.at, o.digits) << "\n";
+        } catch (const std::range_error& e) {
+          out << "undecided: " << e.what() << "\n";
+          return kExitUndecided;
+        }
         return kExitOk;
       },
       [](const std::string& reason) {

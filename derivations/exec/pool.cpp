@@ -9,6 +9,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cln/malloc.h>
+#include <flint/flint.h>
+
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
@@ -62,6 +65,32 @@ bool write_frame(int fd, char status, const char* data, std::uint64_t n) {
 // ---- the worker side ----------------------------------------------------------------------
 
 int g_result_fd = -1;
+// Set when an allocation failed during the current task, even if the code that asked for the
+// memory caught the failure and went on (a rule reporting "the computation failed"): the task
+// then ends as "memory budget exceeded", whatever it returned.
+volatile sig_atomic_t g_alloc_failed = 0;
+void* (*g_cln_malloc)(size_t) = nullptr;
+
+void* cln_malloc(size_t n) {
+  if (void* p = std::malloc(n)) return p;
+  g_alloc_failed = 1;
+  return g_cln_malloc(n);   // CLN's own hook reports the failure its way
+}
+void* flint_alloc(size_t n) {
+  void* p = std::malloc(n);
+  if (!p && n) g_alloc_failed = 1;
+  return p;
+}
+void* flint_calloc(size_t n, size_t size) {
+  void* p = std::calloc(n, size);
+  if (!p && n && size) g_alloc_failed = 1;
+  return p;
+}
+void* flint_realloc(void* q, size_t n) {
+  void* p = std::realloc(q, n);
+  if (!p && n) g_alloc_failed = 1;
+  return p;
+}
 
 // Async-signal-safe: the CPU timer ran out.
 void on_cpu_timer(int) {
@@ -71,6 +100,10 @@ void on_cpu_timer(int) {
 
 // Async-signal-safe: a fault (stack overflow, abort from an allocator, ...).
 void on_fault(int sig) {
+  if (g_alloc_failed) {   // FLINT and GMP abort when an allocation fails
+    write_frame(g_result_fd, kMemory, "", 0);
+    _exit(0);
+  }
   char text[4] = {0, 0, 0, 0};
   int n = 0;
   if (sig >= 10) text[n++] = static_cast<char>('0' + sig / 10);
@@ -116,6 +149,13 @@ bool is_memory_message(const char* what) {
   sa.sa_handler = on_cpu_timer;
   sa.sa_flags = SA_ONSTACK;
   sigaction(SIGPROF, &sa, nullptr);
+  g_cln_malloc = cln::malloc_hook;
+  cln::malloc_hook = cln_malloc;
+  __flint_set_memory_functions(flint_alloc, flint_calloc, flint_realloc, std::free);
+  std::set_new_handler([] {
+    g_alloc_failed = 1;
+    throw std::bad_alloc();
+  });
   sigset_t none;
   sigemptyset(&none);
   sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -145,6 +185,10 @@ bool is_memory_message(const char* what) {
       result = "unknown exception";
     }
     setitimer(ITIMER_PROF, &disarm, nullptr);
+    if (g_alloc_failed) {
+      status = kMemory;
+      result.clear();
+    }
     if (!write_frame(result_fd, status, result.data(), result.size())) _exit(0);
     // After a failed allocation or an escaped exception the worker's state is not trusted.
     if (status != kDone) _exit(0);

@@ -84,12 +84,30 @@ TEST_CASE("equal and eval: runaways end with a verdict or a budget, never an int
 
 TEST_CASE("memory budget: an allocation beyond it ends that computation as undecided, saying so",
           "[cli][budgets]") {
-  // exp at 3e19 needs a number of about 10^19 digits
-  Run r = run({"eval", src("tests/data/runaway/stress.dc"), "k", "--at", "x=30000000000000000000", "--memory", "1G"},
-              120);
+  // Expanding the nested definitions needs far more than 256 MiB long before 20 s of CPU. A
+  // failed allocation ends the step as "memory budget exceeded" even where the code that
+  // asked for the memory catches the failure.
+  Run r = run({"check", src("tests/data/runaway/doubling.dc"), "--memory", "256M", "--step-timeout", "20s"}, 600);
   CAPTURE(r.out, r.err);
   CHECK(r.exit_code == 3);
-  CHECK(r.err.find("memory budget 1 GiB exceeded") != std::string::npos);
+  CHECK(r.out.find("last rewrite \u2014 undecided (budget): memory budget 256 MiB exceeded") != std::string::npos);
+  CHECK(r.out.find("failed") == std::string::npos);
+}
+
+TEST_CASE("eval: values far outside double's range are certified, never a wrong finite number", "[cli][eval]") {
+  struct Case {
+    std::string at, expect;
+  };
+  for (const auto& c : std::vector<Case>{{"x=3", "20.085536923187667741"},
+                                         {"x=1e200", "10^(4.34294481903e+199)"},
+                                         {"x=-1e200", "10^(-4.34294481903e+199)"},
+                                         {"x=30000000000000000000", "10^(1.30288344571e+19)"},
+                                         {"x=1e-300", "1.0000000000000000000"}}) {
+    Run r = run({"eval", src("tests/data/runaway/stress.dc"), "k", "--at", c.at, "--digits", "20"}, 120);
+    CAPTURE(c.at, r.out, r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out == c.expect + "\n");
+  }
 }
 #endif
 
