@@ -160,6 +160,7 @@ TEST_CASE("jobs: the report is byte-identical for any number of workers", "[cli]
     CHECK(a.exit_code == b.exit_code);
     CHECK(a.out == b.out);
     CHECK(!a.out.empty());
+    CHECK(b.err.empty());   // no progress line when stderr is not a terminal
   }
 }
 
