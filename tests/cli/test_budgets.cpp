@@ -225,3 +225,38 @@ TEST_CASE("Slurm array script: its shards, merged, equal one run", "[cli][shard]
   CHECK(merged.exit_code == whole.exit_code);
   std::system(("rm -rf " + dir).c_str());
 }
+
+TEST_CASE("progress: shown on a terminal for a run longer than a second, erased at the end", "[cli][progress]") {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) {
+    WARN("util-linux 'script' is not installed; progress on a terminal not tested");
+    return;
+  }
+  // `script` gives the command a terminal; its stdout goes to a file, so what `script` shows
+  // is what the terminal would: stderr, the progress line.
+  std::string out = temp_path("progress");
+  std::string cmd = "script -qec " +
+                    cli_test::quote(cli_test::quote(DERIVCHECK_CLI) + " check " +
+                                    cli_test::quote(src("tests/data/runaway/doubling.dc")) +
+                                    " --step-timeout 300ms --jobs 1 > " + out) +
+                    " /dev/null";
+  std::string shown;
+  {
+    FILE* p = popen(cmd.c_str(), "r");
+    REQUIRE(p != nullptr);
+    char buf[4096];
+    std::size_t n;
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0) shown.append(buf, n);
+    pclose(p);
+  }
+  CAPTURE(shown);
+  CHECK(shown.find("derivcheck: ") != std::string::npos);
+  CHECK(shown.find(" steps, ") != std::string::npos);
+  CHECK(shown.find("ETA") != std::string::npos);
+  CHECK(shown.find("\r\033[K") != std::string::npos);   // erased line by line, and at the end
+  std::ifstream report(out);
+  std::stringstream ss;
+  ss << report.rdbuf();
+  CHECK(ss.str().find("24 steps:") != std::string::npos);
+  CHECK(ss.str().find("ETA") == std::string::npos);   // the report itself has no progress
+  std::remove(out.c_str());
+}
