@@ -60,7 +60,7 @@ struct Budget {
   int max_depth = 40;                 // nested limit computations (limit of a coefficient, ...)
   long max_steps = 60000;             // series operations, limit and sign calls together
   std::size_t max_coeff_nodes = 3000; // tree size of one series coefficient (after normal)
-  int max_cutoff = 24;                // the highest series exponent cutoff tried
+  int max_relative_order = 32;        // the most orders of w kept beyond a series' first term
   int max_terms_per_series = 60;      // terms kept in one series
   double max_seconds = 8.0;           // wall clock
 

@@ -105,8 +105,8 @@ Gruntz::Lead Gruntz::leadterm(const ex& f) {
   const ex w = pooled_symbol("w", static_cast<std::size_t>(b_.depth));
   ex logw;
   ex g = rewrite(h, omega, w, logw);
-  for (long cutoff = 2; cutoff <= b_.max_cutoff; cutoff *= 2) {
-    SeriesExpander se(*this, w, x_, logw, cutoff);
+  for (long order = 2; order <= b_.max_relative_order; order *= 2) {
+    SeriesExpander se(*this, w, x_, logw, order);
     try {
       WSeries s = se.expand(g);
       if (!se.settle_lead(s)) return {0, 0};
@@ -115,7 +115,8 @@ Gruntz::Lead Gruntz::leadterm(const ex& f) {
       continue;
     }
   }
-  throw BudgetExceeded("the series in w shows no nonzero term below w^" + std::to_string(b_.max_cutoff));
+  throw BudgetExceeded("the series in w shows no nonzero term within " + std::to_string(b_.max_relative_order) +
+                       " orders of its first term");
 }
 
 int Gruntz::constant_sign(const ex& c) {

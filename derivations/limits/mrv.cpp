@@ -124,13 +124,21 @@ ex Gruntz::rewrite(const ex& f, const std::vector<ex>& omega, const ex& w, ex& l
   // sg > 0: g -> oo, w = 1/g; sg < 0: g -> 0, w = g
   logw = sg > 0 ? ex(-garg) : garg;
   std::vector<ex> coeffs;
+  GiNaC::numeric denominators = 1;
   for (const ex& a : omega) {
     LimitValue c = limit(make_tractable(a.op(0) / garg, x_));
     if (!c.finite() || constant_sign(c.value) == 0)
       throw Undecided("internal: two elements of the mrv set are not comparable");
     coeffs.push_back(c.value);
+    if (GiNaC::is_a<GiNaC::numeric>(c.value) && GiNaC::ex_to<GiNaC::numeric>(c.value).is_rational())
+      denominators = GiNaC::lcm(denominators, GiNaC::ex_to<GiNaC::numeric>(c.value).denom());
   }
-  Rewriter rw(x_, omega, coeffs, garg, sg > 0 ? -1 : 1, w);
+  // integer exponents where possible: with exp(-x) and exp(1000 x) in the set, w = exp(-x/1000)
+  // would give powers w^(k/1000); the series is taken in w^(1/L) instead
+  if (denominators > 1000) denominators = 1;
+  for (ex& c : coeffs) c *= denominators;
+  logw = logw / denominators;
+  Rewriter rw(x_, omega, coeffs, garg / denominators, sg > 0 ? -1 : 1, w);
   ex out = rw(f);
   for (const ex& a : omega)
     if (out.has(a)) throw Undecided("internal: the rewriting in w left an element of the mrv set");

@@ -11,6 +11,8 @@
 // same infinity (a bounded oscillating term does not change it); the others have a finite
 // limit and exactly one term oscillates: the limit does not exist. Anything else (two
 // oscillating terms, which might cancel) is undecided.
+#include <optional>
+
 #include "derivations/core/prove_detail.hpp"
 #include "derivations/limits/gruntz.hpp"
 #include "derivations/limits/limits.hpp"
@@ -34,17 +36,58 @@ bool is_bounded(const ex& e) {
   return false;
 }
 
-LimitValue add_limits(const LimitValue& a, const LimitValue& b) {
-  if (a.finite() && b.finite()) return LimitValue::of(a.value + b.value);
-  if (a.finite()) return b;
-  if (b.finite()) return a;
-  if (a.kind == b.kind) return a;
-  throw Undecided("terms tend to +oo and -oo (the oscillating form oo - oo)");
+}  // namespace
+
+namespace {
+
+Outcome from_limit(const LimitValue& v, const std::string& method) {
+  Outcome out;
+  out.kind = v.finite() ? Outcome::Kind::Value
+                        : (v.kind == LimitValue::Kind::PlusInfinity ? Outcome::Kind::PlusInfinity
+                                                                    : Outcome::Kind::MinusInfinity);
+  out.value = v.finite() ? v.value : ex(0);
+  out.method = method;
+  return out;
+}
+
+// g = F(u) with F continuous on the extended line where it matters: exp, atan, sin, cos
+// of an argument u whose limit needs the reductions. nullopt when g is not of that form.
+std::optional<Outcome> outer_function(Gruntz& G, const ex& g) {
+  const std::string n = fname(g);
+  if (g.nops() != 1 || (n != "exp" && n != "atan" && n != "sin" && n != "cos")) return std::nullopt;
+  Outcome u = reduce_oscillation(G, g.op(0));
+  if (u.kind == Outcome::Kind::Value) {
+    Outcome out = u;
+    out.value = GiNaC::function(GiNaC::ex_to<GiNaC::function>(g).get_serial(), u.value);
+    out.method = u.method + " + continuity of " + n;
+    return out;
+  }
+  if (!u.infinite()) return u;   // the argument oscillates without a limit: undecided below
+  const int s = u.kind == Outcome::Kind::PlusInfinity ? 1 : -1;
+  Outcome out;
+  out.method = u.method + " + the limit of " + n + " at " + (s > 0 ? "oo" : "-oo");
+  if (n == "exp") {
+    out.kind = s > 0 ? Outcome::Kind::PlusInfinity : Outcome::Kind::Value;
+    out.value = 0;
+  } else if (n == "atan") {
+    out.kind = Outcome::Kind::Value;
+    out.value = s * GiNaC::Pi / 2;
+  } else {
+    out.kind = Outcome::Kind::DoesNotExist;
+    out.method = "oscillation";
+    out.reason = "the limit does not exist: " + n + " of an argument that tends to infinity oscillates";
+  }
+  return out;
 }
 
 }  // namespace
 
 Outcome reduce_oscillation(Gruntz& G, const ex& g) {
+  DepthGuard guard(G.budget(), "oscillation");
+  if (auto o = outer_function(G, g)) {
+    if (o->kind == Outcome::Kind::Undecided) throw Undecided(o->reason);
+    return *o;
+  }
   ex e = g;
   if (!GiNaC::is_a<GiNaC::add>(e) && tree_size(e, 500) <= 500) {
     ex ee = make_tractable(e.expand(), G.variable());
@@ -56,13 +99,16 @@ Outcome reduce_oscillation(Gruntz& G, const ex& g) {
   else
     terms.push_back(e);
 
-  LimitValue acc = LimitValue::of(0);
+  // terms without an oscillating factor are summed before their limit is taken (x - log(x)
+  // must not become oo - oo)
+  ex regular = 0;
   int oscillating = 0;
   bool unbounded = false;   // an oscillating term's amplitude tends to infinity
   ex oscillator;
   for (const ex& T : terms) {
     try {
-      acc = add_limits(acc, G.limit(T));
+      G.limit(T);
+      regular += T;
       continue;
     } catch (const Oscillates&) {
     }
@@ -90,21 +136,11 @@ Outcome reduce_oscillation(Gruntz& G, const ex& g) {
     }
     throw Undecided("an oscillating factor times a factor that does not tend to 0");
   }
+  const LimitValue acc = G.limit(regular);
   Outcome out;
-  if (oscillating == 0) {
-    out.kind = acc.finite() ? Outcome::Kind::Value
-                            : (acc.kind == LimitValue::Kind::PlusInfinity ? Outcome::Kind::PlusInfinity
-                                                                          : Outcome::Kind::MinusInfinity);
-    out.value = acc.finite() ? acc.value : ex(0);
-    out.method = "Gruntz (mrv) + bounded oscillating factor times a factor that tends to 0";
-    return out;
-  }
-  if (!acc.finite() && !unbounded) {
-    out.kind = acc.kind == LimitValue::Kind::PlusInfinity ? Outcome::Kind::PlusInfinity : Outcome::Kind::MinusInfinity;
-    out.value = 0;
-    out.method = "Gruntz (mrv) + a bounded oscillating term does not change the divergence";
-    return out;
-  }
+  if (oscillating == 0) return from_limit(acc, "Gruntz (mrv) + bounded oscillating factor times a factor that tends to 0");
+  if (!acc.finite() && !unbounded)
+    return from_limit(acc, "Gruntz (mrv) + a bounded oscillating term does not change the divergence");
   if (oscillating == 1 && acc.finite()) {
     out.kind = Outcome::Kind::DoesNotExist;
     out.method = "oscillation";

@@ -21,8 +21,8 @@ ex pooled_symbol(const std::string& stem, std::size_t index) {
   return v[index];
 }
 
-SeriesExpander::SeriesExpander(Oracle& oracle, const ex& w, const ex& x, const ex& logw, long cutoff)
-    : o_(oracle), w_(w), x_(x), logw_(logw), cutoff_(cutoff) {}
+SeriesExpander::SeriesExpander(Oracle& oracle, const ex& w, const ex& x, const ex& logw, long relative_order)
+    : o_(oracle), w_(w), x_(x), logw_(logw), rel_(relative_order) {}
 
 int SeriesExpander::cmp(const ex& a, const ex& b) {
   if (GiNaC::is_a<numeric>(a) && GiNaC::is_a<numeric>(b)) {
@@ -51,15 +51,18 @@ void SeriesExpander::insert_term(std::vector<Term>& v, const ex& e, const ex& c)
   v.insert(v.begin() + static_cast<long>(lo), Term{e, c});
 }
 
-// Drop terms at or beyond the cutoff and beyond the order; keep coefficients small.
-WSeries SeriesExpander::finish(WSeries s, const ex& cut) {
+// Keep rel_ units of exponent beyond the first term (relative truncation: w^-100 (1 + w)^100
+// needs no term beyond w^(-100 + rel_)); drop terms beyond the order; keep coefficients small.
+WSeries SeriesExpander::finish(WSeries s) {
   Budget& b = o_.budget();
   b.tick("series");
   bool dropped = false;
   std::vector<Term> kept;
+  ex cut;
   for (auto& t : s.terms) {
     if (!s.exact && cmp(t.exp, s.order) >= 0) continue;
-    if (cmp(t.exp, cut) >= 0) {
+    if (kept.empty() && !dropped) cut = t.exp + rel_;
+    else if (cmp(t.exp, cut) >= 0) {
       dropped = true;
       continue;
     }
@@ -74,11 +77,9 @@ WSeries SeriesExpander::finish(WSeries s, const ex& cut) {
   s.terms = std::move(kept);
   if (static_cast<int>(s.terms.size()) > b.max_terms_per_series)
     throw BudgetExceeded("a series with more than " + std::to_string(b.max_terms_per_series) + " terms");
-  if (s.exact && dropped) {
+  if (dropped) {
+    s.order = s.exact ? cut : min_order(s.order, cut);
     s.exact = false;
-    s.order = cut;
-  } else if (!s.exact) {
-    s.order = min_order(s.order, cut);
   }
   return s;
 }
@@ -94,16 +95,16 @@ bool SeriesExpander::settle_lead(WSeries& s) {
   throw NeedMoreTerms();
 }
 
-WSeries SeriesExpander::add(const WSeries& a, const WSeries& b, const ex& cut) {
+WSeries SeriesExpander::add(const WSeries& a, const WSeries& b) {
   WSeries r;
   r.exact = a.exact && b.exact;
   if (!r.exact) r.order = a.exact ? b.order : (b.exact ? a.order : min_order(a.order, b.order));
   r.terms = a.terms;
   for (const auto& t : b.terms) insert_term(r.terms, t.exp, t.coeff);
-  return finish(std::move(r), cut);
+  return finish(std::move(r));
 }
 
-WSeries SeriesExpander::mul(const WSeries& a, const WSeries& b, const ex& cut) {
+WSeries SeriesExpander::mul(const WSeries& a, const WSeries& b) {
   if ((a.exact && a.terms.empty()) || (b.exact && b.terms.empty())) return WSeries::zero();
   WSeries r;
   r.exact = a.exact && b.exact;
@@ -112,22 +113,25 @@ WSeries SeriesExpander::mul(const WSeries& a, const WSeries& b, const ex& cut) {
     else if (!a.exact) r.order = a.order + low_valuation(b);
     else r.order = b.order + low_valuation(a);
   }
+  // products beyond rel_ past the leading product are dropped by finish() anyway
+  const bool bounded = !a.terms.empty() && !b.terms.empty();
+  const ex cut = bounded ? a.terms[0].exp + b.terms[0].exp + rel_ : ex(0);
   bool dropped = false;
   for (const auto& ta : a.terms)
     for (const auto& tb : b.terms) {
       ex e = ta.exp + tb.exp;
       if (!r.exact && cmp(e, r.order) >= 0) continue;
-      if (cmp(e, cut) >= 0) {
+      if (bounded && cmp(e, cut) >= 0) {
         dropped = true;
         continue;
       }
       insert_term(r.terms, e, ta.coeff * tb.coeff);
     }
-  if (dropped && r.exact) {
+  if (dropped) {
+    r.order = r.exact ? cut : min_order(r.order, cut);
     r.exact = false;
-    r.order = cut;
   }
-  return finish(std::move(r), cut);
+  return finish(std::move(r));
 }
 
 WSeries SeriesExpander::scale(const WSeries& a, const ex& c, const ex& e) {
@@ -139,18 +143,28 @@ WSeries SeriesExpander::scale(const WSeries& a, const ex& c, const ex& e) {
   return r;
 }
 
-WSeries SeriesExpander::compose(const std::function<ex(int)>& d, const WSeries& r, const ex& cut) {
+WSeries SeriesExpander::compose(const std::function<ex(int)>& d, const WSeries& r) {
   Budget& b = o_.budget();
-  WSeries result = finish(WSeries::monomial(d(0), 0), cut);
+  const ex d0 = d(0);
+  WSeries result = finish(WSeries::monomial(d0, 0));
+  if (r.exact && r.terms.empty()) return result;
+  const ex v = low_valuation(r);   // > 0
+  // the result starts at w^0 (d0 != 0) or at w^v: terms up to rel_ beyond that are kept
+  const ex bound = (d0.is_zero() ? v : ex(0)) + rel_;
   WSeries p = WSeries::monomial(1, 0);
   for (int k = 1;; ++k) {
     if (k > b.max_terms_per_series)
       throw BudgetExceeded("a composed series needs more than " + std::to_string(b.max_terms_per_series) + " terms");
-    p = mul(p, r, cut);
+    p = mul(p, r);
     if (p.exact && p.terms.empty()) break;
-    ex dk = d(k);
-    result = add(result, scale(p, dk, 0), cut);
-    if (p.terms.empty()) break;   // every further power is beyond the cutoff (its order counted)
+    const ex pv = low_valuation(p);
+    if (cmp(pv, bound) >= 0) {   // this and every further power: O(w^pv)
+      WSeries rest;
+      rest.order = pv;
+      result = add(result, rest);
+      break;
+    }
+    result = add(result, scale(p, d(k), 0));
   }
   return result;
 }
@@ -169,8 +183,8 @@ WSeries SeriesExpander::inverse(WSeries s) {
   if (!settle_lead(s)) throw Undecided("a division by an expression that vanishes identically near the point");
   ex c0, e0;
   WSeries r = split_lead(s, c0, e0);
-  WSeries g = compose([](int k) { return ex(k % 2 ? -1 : 1); }, r, cutoff_ + e0);
-  return finish(scale(g, 1 / c0, -e0), cutoff_);
+  WSeries g = compose([](int k) { return ex(k % 2 ? -1 : 1); }, r);
+  return finish(scale(g, 1 / c0, -e0));
 }
 
 WSeries SeriesExpander::power(WSeries s, const ex& p) {
@@ -185,9 +199,9 @@ WSeries SeriesExpander::power(WSeries s, const ex& p) {
     long k = n.to_long();
     WSeries result = WSeries::monomial(1, 0), base = s;
     while (k > 0) {
-      if (k & 1) result = mul(result, base, cutoff_);
+      if (k & 1) result = mul(result, base);
       k >>= 1;
-      if (k) base = mul(base, base, cutoff_);
+      if (k) base = mul(base, base);
     }
     return result;
   }
@@ -207,8 +221,8 @@ WSeries SeriesExpander::power(WSeries s, const ex& p) {
     }
     return binom[static_cast<std::size_t>(k)];
   };
-  WSeries g = compose(d, r, cutoff_ - e0 * p);
-  return finish(scale(g, GiNaC::pow(c0, p), e0 * p), cutoff_);
+  WSeries g = compose(d, r);
+  return finish(scale(g, GiNaC::pow(c0, p), e0 * p));
 }
 
 WSeries SeriesExpander::exp_of(WSeries s) {
@@ -229,8 +243,8 @@ WSeries SeriesExpander::exp_of(WSeries s) {
       inv_fact.push_back(inv_fact.back() / static_cast<long>(inv_fact.size()));
     return inv_fact[static_cast<std::size_t>(k)];
   };
-  WSeries g = compose(d, s, cutoff_);
-  return finish(scale(g, GiNaC::exp(c), 0), cutoff_);
+  WSeries g = compose(d, s);
+  return finish(scale(g, GiNaC::exp(c), 0));
 }
 
 WSeries SeriesExpander::log_of(WSeries s) {
@@ -239,9 +253,8 @@ WSeries SeriesExpander::log_of(WSeries s) {
   WSeries r = split_lead(s, c0, e0);
   if (o_.eventual_sign(c0) < 0) throw NotRealNear("the logarithm of a quantity that is negative near the point");
   auto d = [](int k) -> ex { return k == 0 ? ex(0) : ex(numeric(k % 2 ? 1 : -1, k)); };
-  WSeries g = compose(d, r, cutoff_);
-  WSeries c = WSeries::monomial(GiNaC::log(c0) + e0 * logw_, 0);
-  return add(finish(c, cutoff_), g, cutoff_);
+  WSeries g = compose(d, r);
+  return add(WSeries::monomial(GiNaC::log(c0) + e0 * logw_, 0), g);
 }
 
 WSeries SeriesExpander::abs_of(WSeries s) {
@@ -271,7 +284,7 @@ WSeries SeriesExpander::function_of(const ex& e, WSeries s) {
     int sg = o_.eventual_sign(s.terms[0].coeff);
     WSeries inv = inverse(std::move(s));
     WSeries a = function_of(e, std::move(inv));
-    return add(finish(WSeries::monomial(sg * GiNaC::Pi / 2, 0), cutoff_), scale(a, -1, 0), cutoff_);
+    return add(WSeries::monomial(sg * GiNaC::Pi / 2, 0), scale(a, -1, 0));
   }
   if (!s.exact && cmp(s.order, 0) <= 0) throw NeedMoreTerms();
   ex c0 = 0;
@@ -300,7 +313,7 @@ WSeries SeriesExpander::function_of(const ex& e, WSeries s) {
       throw Undecided(name + " is singular at the expansion point");
     }
   };
-  return compose(d, s, cutoff_);
+  return compose(d, s);
 }
 
 WSeries SeriesExpander::expand(const ex& e) {
@@ -317,13 +330,13 @@ WSeries SeriesExpander::expand_uncached(const ex& e) {
   if (e.is_equal(w_)) return WSeries::monomial(1, 1);
   if (GiNaC::is_a<GiNaC::add>(e)) {
     WSeries s = expand(e.op(0));
-    for (std::size_t i = 1; i < e.nops(); ++i) s = add(s, expand(e.op(i)), cutoff_);
+    for (std::size_t i = 1; i < e.nops(); ++i) s = add(s, expand(e.op(i)));
     return s;
   }
   if (GiNaC::is_a<GiNaC::mul>(e)) {
     // factors free of w first: they are exact monomials
     WSeries s = WSeries::monomial(1, 0);
-    for (std::size_t i = 0; i < e.nops(); ++i) s = mul(s, expand(e.op(i)), cutoff_);
+    for (std::size_t i = 0; i < e.nops(); ++i) s = mul(s, expand(e.op(i)));
     return s;
   }
   if (GiNaC::is_a<GiNaC::power>(e)) {

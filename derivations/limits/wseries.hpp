@@ -59,8 +59,9 @@ class Oracle {
 class SeriesExpander {
  public:
   // w: the positive symbol; x: the limit variable (only to recognise coefficients);
-  // logw: what log(w) stands for; cutoff: terms with exponent >= cutoff are dropped.
-  SeriesExpander(Oracle& oracle, const GiNaC::ex& w, const GiNaC::ex& x, const GiNaC::ex& logw, long cutoff);
+  // logw: what log(w) stands for; relative_order: every series keeps the terms up to
+  // w^(e + relative_order), e its first exponent (the rest is its O-term).
+  SeriesExpander(Oracle& oracle, const GiNaC::ex& w, const GiNaC::ex& x, const GiNaC::ex& logw, long relative_order);
 
   // The series of e. Throws NeedMoreTerms (raise the cutoff), Undecided, Oscillates, NotRealNear.
   WSeries expand(const GiNaC::ex& e);
@@ -73,20 +74,20 @@ class SeriesExpander {
  private:
   Oracle& o_;
   GiNaC::ex w_, x_, logw_;
-  long cutoff_;
+  long rel_;
   std::map<GiNaC::ex, WSeries, GiNaC::ex_is_less> memo_;
 
   int cmp(const GiNaC::ex& a, const GiNaC::ex& b);
   GiNaC::ex min_order(const GiNaC::ex& a, const GiNaC::ex& b);
   void insert_term(std::vector<Term>& v, const GiNaC::ex& e, const GiNaC::ex& c);
-  WSeries finish(WSeries s, const GiNaC::ex& cut);
+  WSeries finish(WSeries s);
   GiNaC::ex low_valuation(const WSeries& s);   // a lower bound of the valuation
 
-  WSeries add(const WSeries& a, const WSeries& b, const GiNaC::ex& cut);
-  WSeries mul(const WSeries& a, const WSeries& b, const GiNaC::ex& cut);
+  WSeries add(const WSeries& a, const WSeries& b);
+  WSeries mul(const WSeries& a, const WSeries& b);
   WSeries scale(const WSeries& a, const GiNaC::ex& c, const GiNaC::ex& e);   // c w^e * a
-  // sum_k d(k) r^k for r of positive valuation, to relative cutoff `cut`.
-  WSeries compose(const std::function<GiNaC::ex(int)>& d, const WSeries& r, const GiNaC::ex& cut);
+  // sum_k d(k) r^k for r of positive valuation.
+  WSeries compose(const std::function<GiNaC::ex(int)>& d, const WSeries& r);
   // s = c0 w^e0 (1 + r): returns r (and c0, e0); s must have a settled leading term.
   WSeries split_lead(const WSeries& s, GiNaC::ex& c0, GiNaC::ex& e0);
 
