@@ -316,6 +316,29 @@ WSeries SeriesExpander::function_of(const ex& e, WSeries s) {
   return compose(d, s);
 }
 
+// A coefficient log(a(x)) or a(x)^p (p not an integer) with a(x) < 0 for all large x has no
+// real value near the point: certified by the sign of a. Undecided signs are left alone here.
+void SeriesExpander::require_real(const ex& c) {
+  for (GiNaC::const_preorder_iterator i = c.preorder_begin(); i != c.preorder_end(); ++i) {
+    ex arg;
+    if (GiNaC::is_a<GiNaC::function>(*i) && GiNaC::ex_to<GiNaC::function>(*i).get_name() == "log") arg = i->op(0);
+    else if (GiNaC::is_a<GiNaC::power>(*i) && !i->op(1).info(GiNaC::info_flags::integer)) arg = i->op(0);
+    else continue;
+    if (!arg.has(x_)) continue;
+    int s = 0;
+    try {
+      s = o_.eventual_sign(arg);
+    } catch (const Undecided&) {
+      continue;
+    } catch (const Oscillates&) {
+      continue;
+    }
+    if (s < 0)
+      throw NotRealNear(GiNaC::is_a<GiNaC::power>(*i) ? "a fractional power of a quantity that is negative near the point"
+                                                      : "the logarithm of a quantity that is negative near the point");
+  }
+}
+
 WSeries SeriesExpander::expand(const ex& e) {
   auto it = memo_.find(e);
   if (it != memo_.end()) return it->second;
@@ -326,7 +349,10 @@ WSeries SeriesExpander::expand(const ex& e) {
 
 WSeries SeriesExpander::expand_uncached(const ex& e) {
   o_.budget().tick("series expansion");
-  if (!e.has(w_)) return e.is_zero() ? WSeries::zero() : WSeries::monomial(e, 0);
+  if (!e.has(w_)) {
+    if (e.has(x_)) require_real(e);
+    return e.is_zero() ? WSeries::zero() : WSeries::monomial(e, 0);
+  }
   if (e.is_equal(w_)) return WSeries::monomial(1, 1);
   if (GiNaC::is_a<GiNaC::add>(e)) {
     WSeries s = expand(e.op(0));

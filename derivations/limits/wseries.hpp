@@ -99,6 +99,7 @@ class SeriesExpander {
   WSeries function_of(const GiNaC::ex& e, WSeries s);
 
   WSeries expand_uncached(const GiNaC::ex& e);
+  void require_real(const GiNaC::ex& coefficient);
 };
 
 }  // namespace dc::limits
