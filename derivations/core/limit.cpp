@@ -59,10 +59,50 @@ namespace {
 
 namespace L = dc::limits;
 
-// Can x approach `point` from `side` inside its declared domain? 1 yes, 0 no, -1 unknown.
+bool x_constrained(const ex& x, const SymbolTable& ctx) {
+  for (const Constraint& c : ctx.constraints())
+    if (c.lhs.has(x) || c.rhs.has(x)) return true;
+  return false;
+}
+
+// Do the assumptions (constraints such as x > 1) that involve x allow x = point + side*eps?
+// Checked at a few admissible points of the other symbols: 1 at all of them, 0 at none,
+// -1 mixed or not evaluable.
+int constraints_allow(const ex& x, const ex& point, int side, const SymbolTable& ctx) {
+  std::vector<const Constraint*> mine;
+  for (const Constraint& c : ctx.constraints())
+    if (c.lhs.has(x) || c.rhs.has(x)) mine.push_back(&c);
+  if (mine.empty()) return 1;
+  std::vector<ex> exprs{point, x};
+  for (const Constraint* c : mine) exprs.push_back(c->lhs - c->rhs);
+  d::PointSampler sampler(exprs, ctx);
+  d::Rng rng(20261207);
+  int yes = 0, no = 0;
+  for (int attempt = 0; attempt < 12 && yes + no < 4; ++attempt) {
+    bool adm = false;
+    GiNaC::exmap p = sampler.draw(rng, 0, &adm);
+    // admissible for the other symbols: the constraints without x must hold
+    bool others = true;
+    for (const Constraint& c : ctx.constraints())
+      if (!(c.lhs.has(x) || c.rhs.has(x)) && !c.holds_at(p)) others = false;
+    if (!others) continue;
+    p[x] = point.subs(p, GiNaC::subs_options::no_pattern) + side * pow10(-40);
+    bool all = true;
+    for (const Constraint* c : mine) all = all && c->holds_at(p);
+    (all ? yes : no) += 1;
+  }
+  if (yes > 0 && no == 0) return 1;
+  if (no > 0 && yes == 0) return 0;
+  return -1;
+}
+
+// Can x approach `point` from `side` inside its declared domain and the assumptions on it?
+// 1 yes, 0 no, -1 unknown.
 int side_allowed(const ex& x, const ex& point, int side, const SymbolTable& ctx) {
+  const int by_assumptions = constraints_allow(x, point, side, ctx);
+  if (by_assumptions == 0) return 0;
   const Domain dom = d::domain_of(x, ctx);
-  if (dom.kind == Domain::Kind::Real) return 1;
+  if (dom.kind == Domain::Kind::Real) return by_assumptions;
   // the conditions "point + side*eps lies inside": v - lo > 0 and/or hi - v > 0
   std::vector<ex> must_be_positive;
   const ex v = point + side * pow10(-40);
@@ -78,7 +118,7 @@ int side_allowed(const ex& x, const ex& point, int side, const SymbolTable& ctx)
   }
   bool constant = GiNaC::is_a<numeric>(point) || point.info(GiNaC::info_flags::real) ||
                   d::ordered_symbols(point, ctx).empty();
-  int verdict = 1;
+  int verdict = by_assumptions;
   for (const ex& c : must_be_positive) {
     if (constant) {
       kernel::Ball b = kernel::enclose_sign(c, 128, 1 << 12);
@@ -184,15 +224,16 @@ LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& poin
     int a = side_allowed(x, point, s, ctx);
     if (a == -1) {
       res.reason = std::string("cannot tell whether x can approach the point from ") + (s > 0 ? "above" : "below") +
-                   " within its declared domain";
+                   " within its declared domain" + (x_constrained(x, ctx) ? " and the assumptions" : "");
       return res;
     }
     if (a == 1) sides.push_back(s);
   }
   if (sides.empty()) {
-    res.reason = dir != 0 ? std::string("x cannot approach the point from ") + (dir > 0 ? "above" : "below") +
-                                " within its declared domain"
-                          : "the point is not approached from either side within the declared domain of x";
+    const std::string where = x_constrained(x, ctx) ? " within its declared domain and the assumptions"
+                                                    : " within its declared domain";
+    res.reason = dir != 0 ? std::string("x cannot approach the point from ") + (dir > 0 ? "above" : "below") + where
+                          : "x cannot approach the point from either side" + where;
     return res;
   }
   std::vector<L::Outcome> out;
@@ -202,7 +243,9 @@ LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& poin
   auto from = [](int s) { return std::string(s > 0 ? "from above: " : "from below: "); };
   const std::string xname = GiNaC::ex_to<GiNaC::symbol>(x).get_name();
   const std::string via_domain =
-      dir == 0 && sides.size() == 1 ? " (the only side in the declared domain of " + xname + ")" : "";
+      dir == 0 && sides.size() == 1
+          ? " (the only side in the declared domain of " + xname + (x_constrained(x, ctx) ? " and the assumptions)" : ")")
+          : "";
   if (sides.size() == 1) {
     const L::Outcome& o = out[0];
     if (o.decided_limit()) set_value(res, o);
