@@ -4,11 +4,12 @@
 Each line is a limit claim (lhs, var, point, optional dir, rhs, assumptions, expected). The
 script computes sympy.limit(lhs, var, point, dir) and judges the claim the way a user would:
 
-  rhs a value        proved if simplify(limit - rhs) == 0, refuted if both are numbers and
-                     differ (or one is infinite and the other not), otherwise "cannot"
+  rhs a value        proved if simplify(limit - rhs) == 0, refuted otherwise (as a user reads
+                     it); a limit with oo, zoo, nan or sign(...) in it: "cannot"
   rhs oo / -oo       proved / refuted by the value SymPy returns
-  rhs undefined      proved if SymPy says the one-sided limits differ (ValueError for dir="+-")
-                     or returns AccumBounds (oscillation), refuted if it returns a value
+  rhs undefined      proved if SymPy says the one-sided limits differ (ValueError for dir="+-"),
+                     returns zoo (unsigned infinity) or AccumBounds (oscillation), refuted if it
+                     returns a value
 
 An exception, an unevaluated Limit, or the timeout counts as "cannot". Timing is the
 sympy.limit call only (median of --repeats runs, SymPy's cache cleared before each), so it
@@ -23,6 +24,7 @@ Usage: sympy_limits.py [--corpus FILE] [--repeats N] [--timeout S] [--json FILE]
 """
 import argparse
 import json
+import keyword
 import re
 import signal
 import statistics
@@ -61,19 +63,25 @@ def symbols_for(texts, assumptions):
             kw = {"positive": True} if float(sp.sympify(lo)) >= 0 else {"real": True}
         else:
             kw = {"real": True}
-        table[n] = sp.Symbol(n, **kw)
+        table[safe(n)] = sp.Symbol(n, **kw)
     table.update({"ln": sp.log, "abs": sp.Abs, "pi": sp.pi, "oo": sp.oo, "exp": sp.exp})
     return table
 
 
+def safe(name):
+    """Python keywords (lambda) cannot be names in parse_expr: lambda -> lambda_."""
+    return name + "_" if keyword.iskeyword(name) else name
+
+
 def parse(text, table):
+    text = re.sub(r"[A-Za-z_][A-Za-z_0-9]*", lambda m: safe(m.group(0)), text)
     return parse_expr(text.replace("^", "**"), local_dict=table, transformations=standard_transformations)
 
 
 def judge(claim, repeats, timeout):
     table = symbols_for([claim["lhs"], claim["rhs"], claim["point"], claim["var"]], claim.get("assumptions", {}))
     f = parse(claim["lhs"], table)
-    x = table[claim["var"]]
+    x = table[safe(claim["var"])]
     point = {"oo": sp.oo, "+oo": sp.oo, "-oo": -sp.oo}.get(claim["point"]) or parse(claim["point"], table)
     direction = claim.get("dir", "+-")
     if point in (sp.oo, -sp.oo):
@@ -103,6 +111,8 @@ def judge(claim, repeats, timeout):
         return "cannot", times, error
     if result.has(sp.Limit):
         return "cannot", times, "unevaluated Limit"
+    if result == sp.zoo:   # unsigned infinity: for a real two-sided limit, the sides differ
+        return ("proved" if rhs_text == "undefined" else "refuted"), times, "zoo"
     if isinstance(result, sp.AccumBounds) or result.has(sp.AccumBounds):
         return ("proved" if rhs_text == "undefined" else "refuted"), times, str(result)
     if rhs_text == "undefined":
@@ -115,17 +125,17 @@ def judge(claim, repeats, timeout):
             return "refuted", times, str(result)
         return "cannot", times, str(result)
     rhs = parse(rhs_text, table)
-    if result in (sp.oo, -sp.oo, sp.zoo):
+    if result in (sp.oo, -sp.oo):
         return "refuted", times, str(result)
+    if result.has(sp.oo, sp.zoo, sp.nan, sp.sign):
+        return "cannot", times, str(result)
     try:
-        if sp.simplify(result - rhs) == 0:
-            return "proved", times, str(result)
+        diff = sp.simplify(result - rhs)
     except Exception:  # noqa: BLE001
         return "cannot", times, str(result)
-    d = sp.N(result - rhs, 30)
-    if d.is_number and d != 0 and d.is_finite:
-        return "refuted", times, str(result)
-    return "cannot", times, str(result)
+    # as a user reads it: a difference that simplifies to 0 proves the claim, any other
+    # difference refutes it
+    return ("proved" if diff == 0 else "refuted"), times, str(result)
 
 
 def main():
