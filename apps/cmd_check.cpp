@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
 #include "derivations/core/io.hpp"
 #include "derivations/core/report.hpp"
@@ -13,11 +14,13 @@ namespace {
 struct CheckOptions {
   std::vector<std::string> inputs;
   bool json = false, strict = false, quiet = false, timings = false;
+  BudgetFlags budget;
 };
 
 int run(const CheckOptions& o) {
-  std::vector<FileReport> reports;
-  for (const auto& f : dc::derivation_files(o.inputs)) reports.push_back(check_file(f));
+  // Every step in a worker process under the budget, on --jobs workers; the report is the same
+  // for any number of jobs.
+  std::vector<FileReport> reports = exec::check_files(dc::derivation_files(o.inputs), o.budget.resolve());
   ReportOptions ro;
   ro.timings = o.timings;
   ro.quiet = o.quiet;
@@ -37,6 +40,7 @@ const CommandRegistrar registrar(
       sub.add_flag("--strict", o->strict, "reported errata count as failures (exit code 1)");
       sub.add_flag("--quiet", o->quiet, "print only steps that do not hold, errors and the summary");
       sub.add_flag("--timings", o->timings, "print the time of each step (not deterministic)");
+      o->budget.add_to(sub, true);
       return [o] { return run(*o); };
     });
 

@@ -1,48 +1,26 @@
 // derivcheck claims FILE.jsonl — batch-check a claim bank, one JSON result per line (docs/cli.md).
 #include <iostream>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
-#include "derivations/core/claims.hpp"
-#include "derivations/core/io.hpp"
 
 namespace dc::cli {
 namespace {
 
 struct ClaimsOptions {
   std::string file;
+  std::string shard = "1/1";
   bool no_timings = false;
+  BudgetFlags budget;
 };
 
 int run(const ClaimsOptions& o) {
-  // Line by line: a bad line (invalid UTF-8, malformed JSON, wrong field types, an unknown
-  // kind, a line over the limit) gets an "error" result and the rest go on.
-  InputFile file(o.file);
-  LineReader reader(file);
-  LineReader::Line line;
-  int claims = 0;
-  bool refuted = false, undecided = false, malformed = false;
-  while (reader.next(line)) {
-    if (!line.too_long && line.text.find_first_not_of(" \t") == std::string::npos) continue;
-    ++claims;
-    nlohmann::ordered_json r =
-        line.too_long ? claim_line_error(line.number, o.file,
-                                         "the line is " + std::to_string(line.length) + " bytes long; a claim may be at most " +
-                                             std::to_string(kMaxInputLineBytes >> 20) + " MiB")
-                      : check_claim_line(line.text, line.number, o.file);
-    if (o.no_timings) r.erase("seconds");
-    std::string verdict = r.value("verdict", "");
-    if (verdict == "error") malformed = true;
-    else if (verdict == "refuted") refuted = true;
-    else if (verdict == "undecided") undecided = true;
-    std::cout << json_text(r) << "\n";
-  }
-  std::cout.flush();
-  if (claims == 0)
-    throw InputError({o.file, 0, 0}, "no claims (the file is empty or has only blank lines); expected one JSON object per line");
-  if (malformed) return kExitInputError;
-  if (refuted) return kExitRefuted;
-  if (undecided) return kExitUndecided;
-  return kExitOk;
+  // Line by line on worker processes: a bad line (invalid UTF-8, malformed JSON, wrong field
+  // types, an unknown kind, a line over the limit) gets an "error" result, a line over its
+  // budget an "undecided" one, and the rest go on; results come out in line order.
+  exec::RunOptions run = o.budget.resolve();
+  exec::Shard shard = exec::parse_shard(o.shard);
+  return exec::check_claims(o.file, shard, !o.no_timings, run, std::cout).exit_code();
 }
 
 const CommandRegistrar registrar(
@@ -51,6 +29,9 @@ const CommandRegistrar registrar(
       auto o = std::make_shared<ClaimsOptions>();
       sub.add_option("file", o->file, "claims, one JSON object per line")->required();
       sub.add_flag("--no-timings", o->no_timings, "omit the measured 'seconds' (byte-identical output)");
+      sub.add_option("--shard", o->shard,
+                     "K/N: check only the lines n with (n-1) mod N = K-1; `derivcheck merge` joins the shards' results");
+      o->budget.add_to(sub, true);
       return [o] { return run(*o); };
     });
 

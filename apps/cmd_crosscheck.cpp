@@ -7,7 +7,10 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
+#include "derivations/exec/pool.hpp"
+#include "derivations/exec/wire.hpp"
 #include "derivations/core/io.hpp"
 #include "derivations/core/derivation.hpp"
 #include "numeric/crosscheck.hpp"
@@ -20,7 +23,51 @@ struct CrossOptions {
   num::CrossCheckOptions opt;
   bool no_stress = false;
   double fail_above = -1;
+  BudgetFlags budget;
 };
+
+std::string encode(const std::vector<num::FormulaReport>& reports) {
+  exec::Writer w;
+  w.u64(reports.size());
+  for (const auto& r : reports) {
+    for (const auto* s : {&r.file, &r.label, &r.target, &r.stable_label, &r.stable_regime, &r.stable_of, &r.skipped})
+      w.str(*s);
+    w.u64(r.in_regime);
+    w.u64(r.rejected);
+    w.u64(r.methods.size());
+    for (const auto& m : r.methods) {
+      w.str(m.method);
+      w.u64(m.points);
+      w.u64(m.stress_points);
+      for (double d : {m.median_ulps, m.max_ulps, m.max_ulps_random, m.max_ulps_stress}) w.f64(d);
+      w.u64(m.non_finite);
+      w.pairs(m.worst_point);
+      w.str(m.worst_kind);
+    }
+  }
+  return w.take();
+}
+
+std::vector<num::FormulaReport> decode(const std::string& bytes) {
+  exec::Reader rd(bytes);
+  std::vector<num::FormulaReport> out(rd.u64());
+  for (auto& r : out) {
+    for (auto* s : {&r.file, &r.label, &r.target, &r.stable_label, &r.stable_regime, &r.stable_of, &r.skipped}) *s = rd.str();
+    r.in_regime = rd.u64();
+    r.rejected = rd.u64();
+    r.methods.resize(rd.u64());
+    for (auto& m : r.methods) {
+      m.method = rd.str();
+      m.points = rd.u64();
+      m.stress_points = rd.u64();
+      for (double* d : {&m.median_ulps, &m.max_ulps, &m.max_ulps_random, &m.max_ulps_stress}) *d = rd.f64();
+      m.non_finite = rd.u64();
+      m.worst_point = rd.pairs();
+      m.worst_kind = rd.str();
+    }
+  }
+  return out;
+}
 
 int run(CrossOptions& o) {
   if (o.opt.points < 1 || o.opt.points > 1000000)
@@ -28,12 +75,46 @@ int run(CrossOptions& o) {
   if (o.opt.digits < 20 || o.opt.digits > 1000)
     throw std::domain_error("--digits " + std::to_string(o.opt.digits) + " is outside [20, 1000]");
   o.opt.stress = !o.no_stress;
-  std::vector<num::FormulaReport> all;
+  // One worker task per formula, under the budget: a formula whose reference values cannot
+  // be computed in time is reported as not evaluated, with the budget as the reason.
+  struct Task {
+    std::size_t file;
+    int formula;
+    std::string label;
+  };
+  std::vector<Derivation> derivations;
+  std::vector<Task> tasks;
   for (const auto& f : dc::derivation_files(o.inputs)) {
-    const Derivation d = load_derivation(f);
-    auto r = num::crosscheck(d, o.opt);
-    all.insert(all.end(), r.begin(), r.end());
+    derivations.push_back(load_derivation(f));
+    int i = 0;
+    for (const auto& formula : formulas(derivations.back())) tasks.push_back({derivations.size() - 1, i++, formula.label});
   }
+  exec::RunOptions run = o.budget.resolve();
+  const num::CrossCheckOptions base = o.opt;
+  exec::Pool pool(run.jobs, run.budget, [&](const std::string& task) {
+    const Task& t = tasks[std::stoul(task)];
+    num::CrossCheckOptions one = base;
+    one.only_formula = t.formula;
+    return encode(num::crosscheck(derivations[t.file], one));
+  });
+  std::vector<num::FormulaReport> all;
+  std::size_t next = 0, done = 0;
+  pool.run([&](std::string& task) {
+    if (next >= tasks.size()) return false;
+    task = std::to_string(next++);
+    return true;
+  }, [&](exec::Outcome&& out) {
+    const Task& t = tasks[done++];
+    if (out.done()) {
+      for (auto& r : decode(out.payload)) all.push_back(std::move(r));
+      return;
+    }
+    num::FormulaReport r;
+    r.file = derivations[t.file].source.name;
+    r.label = t.label;
+    r.skipped = out.reason;
+    all.push_back(std::move(r));
+  });
   std::cout << num::format_crosscheck(all, o.opt);
   if (o.fail_above >= 0) {
     for (const auto& r : all)
@@ -55,6 +136,7 @@ const CommandRegistrar registrar(
       sub.add_flag("--no-stress", o->no_stress, "random points only");
       sub.add_option("--fail-above", o->fail_above,
                      "exit 1 if a stable form's max error exceeds this many ulps");
+      o->budget.add_to(sub, true);
       return [o] { return run(*o); };
     });
 

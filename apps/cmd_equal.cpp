@@ -1,6 +1,7 @@
 // derivcheck equal LHS RHS [--assume "m1>0, v1 real, e in [0,1]"] — one claim (docs/cli.md).
 #include <iostream>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
 #include "derivations/core/claims.hpp"
 #include "derivations/core/io.hpp"
@@ -12,20 +13,23 @@ namespace {
 struct EqualOptions {
   std::string lhs, rhs, assume;
   bool json = false;
+  BudgetFlags budget;
 };
 
-int run(const EqualOptions& o) {
-  Verdict v = check_equal(o.lhs, o.rhs, o.assume);
-  if (o.json) {
-    std::cout << dc::json_text(verdict_json(v), 2) << "\n";
+void print(const Verdict& v, bool json, std::ostream& out) {
+  if (json) {
+    out << dc::json_text(verdict_json(v), 2) << "\n";
   } else {
-    std::cout << verdict_phrase(v) << "\n" << verdict_evidence(v, "    ");
+    out << verdict_phrase(v) << "\n" << verdict_evidence(v, "    ");
     for (const auto& sc : v.side_conditions)
       if (sc.status != SideCondition::Status::Guaranteed)
-        std::cout << "    side condition: " << sc.what << " (" << sc.reason << ") "
+        out << "    side condition: " << sc.what << " (" << sc.reason << ") "
                   << (sc.status == SideCondition::Status::Violated ? "violated" : "not guaranteed by the assumptions")
                   << (sc.evidence.empty() ? "" : ": " + sc.evidence) << "\n";
   }
+}
+
+int exit_code(const Verdict& v) {
   switch (v.kind) {
     case VerdictKind::Proved:
     case VerdictKind::HoldsNumerically: return kExitOk;
@@ -33,6 +37,24 @@ int run(const EqualOptions& o) {
     case VerdictKind::Undecided: return kExitUndecided;
   }
   return kExitInternal;
+}
+
+int run(const EqualOptions& o) {
+  // Parsing, the cascade and the probe all run in a worker under the budget.
+  return run_supervised(
+      o.budget.resolve(),
+      [&o](std::ostream& out) {
+        Verdict v = check_equal(o.lhs, o.rhs, o.assume);
+        print(v, o.json, out);
+        return exit_code(v);
+      },
+      [&o](const std::string& reason) {
+        Verdict v;
+        v.method = "budget";
+        v.reason = reason;
+        print(v, o.json, std::cout);
+        return exit_code(v);
+      });
 }
 
 const CommandRegistrar registrar(
@@ -45,6 +67,7 @@ const CommandRegistrar registrar(
                      "comma-separated assumptions: x>0, x>=0, x<0, x real, x in (a,b) / [a,b], or relations "
                      "such as v1 > v2; other symbols are real");
       sub.add_flag("--json", o->json, "print the verdict as JSON");
+      o->budget.add_to(sub, false);
       return [o] { return run(*o); };
     });
 

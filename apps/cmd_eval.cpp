@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
 #include "derivations/core/derivation.hpp"
 #include "numeric/reference.hpp"
@@ -16,12 +17,26 @@ namespace {
 struct EvalOptions {
   std::string file, label, at;
   int digits = 50;
+  BudgetFlags budget;
 };
 
 int run(const EvalOptions& o) {
-  const Derivation d = load_derivation(o.file);
-  std::cout << num::eval_formula(d, o.label, o.at, o.digits) << "\n";
-  return kExitOk;
+  return run_supervised(
+      o.budget.resolve(),
+      [&o](std::ostream& out) {
+        const Derivation d = load_derivation(o.file);
+        try {
+          out << num::eval_formula(d, o.label, o.at, o.digits) << "\n";
+        } catch (const std::range_error& e) {
+          out << "undecided: " << e.what() << "\n";
+          return kExitUndecided;
+        }
+        return kExitOk;
+      },
+      [](const std::string& reason) {
+        std::cerr << "derivcheck: undecided: the value was not computed: " << reason << "\n";
+        return kExitUndecided;
+      });
 }
 
 const CommandRegistrar registrar(
@@ -32,6 +47,7 @@ const CommandRegistrar registrar(
       sub.add_option("label", o->label, "label of a step 'y = expr'")->required();
       sub.add_option("--at", o->at, "the point: NAME=VALUE,... with exact values (5/2, -0.125, 1e-9)");
       sub.add_option("--digits", o->digits, "significant digits of the result (1..1000)")->capture_default_str();
+      o->budget.add_to(sub, false);
       return [o] { return run(*o); };
     });
 

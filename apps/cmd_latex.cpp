@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
 #include "derivations/core/derivation.hpp"
 #include "derivations/core/io.hpp"
 #include "derivations/core/latex.hpp"
 #include "derivations/core/rules.hpp"
+#include "derivations/exec/batch.hpp"
 
 namespace dc::cli {
 namespace {
@@ -19,30 +21,48 @@ struct LatexCliOptions {
   std::string output;
   std::string title;
   std::string subtitle;
-  bool fragment = false, annotate = false;
+  bool fragment = false, annotate = false, allow_unchecked = false;
+  BudgetFlags budget;
 };
+
+std::string step_position(const Derivation& d, const Step& s) {
+  return d.source.name + ":" + std::to_string(s.pos.line) + ":" + std::to_string(s.pos.col);
+}
 
 int run(const LatexCliOptions& o) {
   const std::vector<std::string> files = dc::derivation_files(o.inputs);
   const bool to_stdout = o.output.empty() || o.output == "-";
   if (!to_stdout) refuse_output_over_inputs(o.output, files);   // before any work
-  std::vector<Derivation> ds;
-  for (const auto& f : files) ds.push_back(load_derivation(f));  // InputError -> exit 2
+  // Every step is checked (as `check` does, under the budgets): a handout with a step that does
+  // not hold is not emitted unless --allow-unchecked, and then that step is marked in it.
+  std::vector<FileReport> reports = exec::check_files(files, o.budget.resolve());
   std::vector<const Derivation*> ptrs;
-  for (const auto& d : ds) ptrs.push_back(&d);
-  std::vector<CheckSummary> summaries;
   std::vector<const CheckSummary*> checks;
+  std::vector<std::string> unchecked;
+  for (const auto& r : reports) {
+    if (r.input_error) throw *r.input_error;
+    ptrs.push_back(&*r.derivation);
+    checks.push_back(&r.summary);
+    for (const auto& res : r.summary.results)
+      if (!step_checked_ok(res))
+        unchecked.push_back(step_position(*r.derivation, *res.step) + ": step '" + res.step->label + "' " +
+                            (res.verdict.holds() ? std::string("has errors") : "is " + std::string(to_string(res.verdict.kind))) +
+                            " (" + res.verdict.method + ")");
+  }
+  if (!unchecked.empty() && !o.allow_unchecked) {
+    for (const auto& u : unchecked) std::cerr << u << "\n";
+    std::cerr << "derivcheck latex: " << unchecked.size() << (unchecked.size() == 1 ? " step does" : " steps do")
+              << " not hold; no LaTeX written (run `derivcheck check` for the evidence, or pass --allow-unchecked "
+                 "to emit it with those steps marked)\n";
+    return kExitRefuted;
+  }
   LatexOptions lo;
   lo.fragment = o.fragment;
   lo.annotate = o.annotate;
   lo.title = o.title;
   lo.subtitle = o.subtitle;
-  if (o.annotate) {
-    summaries.reserve(ds.size());
-    for (const auto& d : ds) summaries.push_back(check_derivation(d));
-    for (const auto& s : summaries) checks.push_back(&s);
-    lo.checks = &checks;
-  }
+  lo.checks = &checks;
+  lo.mark_unchecked = o.allow_unchecked;
   std::string tex = write_latex(ptrs, lo);
   if (to_stdout) {
     std::cout << tex;
@@ -63,6 +83,9 @@ const CommandRegistrar registrar(
       sub.add_flag("--annotate", o->annotate, "each step's rule and verdict as a margin note, and its notes");
       sub.add_option("--title", o->title, "document title (default: the derivation's title)");
       sub.add_option("--subtitle", o->subtitle, "a line under the title");
+      sub.add_flag("--allow-unchecked", o->allow_unchecked,
+                   "emit even if steps are refuted or undecided (they are marked NOT CHECKED)");
+      o->budget.add_to(sub, true);
       return [o] { return run(*o); };
     });
 

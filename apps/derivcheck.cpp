@@ -13,6 +13,62 @@ std::vector<Command>& registry() {
   static std::vector<Command> commands;
   return commands;
 }
+
+namespace {
+
+// Expressions may start with a minus (`derivcheck equal x -x`): an argument that begins with
+// '-' but is not an option of the chosen subcommand, nor the value of the option before it,
+// is a positional argument. Such arguments are moved after a "--" at the end (their order
+// among the positionals is kept), which is how CLI11 takes positionals that look like options.
+std::vector<std::string> positional_minus(CLI::App& app, int argc, char** argv) {
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty()) return args;
+  CLI::App* sub = nullptr;
+  try {
+    sub = app.get_subcommand(args[0]);
+  } catch (const CLI::OptionNotFound&) {
+    return args;
+  }
+  std::vector<std::string> out{args[0]}, moved;
+  bool plain = false;   // after a "--" given by the user
+  std::string positionals_before;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    const std::string& t = args[i];
+    if (plain || t == "--") {
+      plain = true;
+      if (t != "--" || !moved.empty()) moved.push_back(t);
+      continue;
+    }
+    if (t.size() < 2 || t[0] != '-') {
+      // A positional: any minus-led positionals before it must keep their place.
+      if (!moved.empty()) moved.push_back(t);
+      else out.push_back(t);
+      continue;
+    }
+    std::string name = t.substr(0, t.find('='));
+    const CLI::Option* opt = sub->get_option_no_throw(name);
+    if (opt == nullptr && t.rfind("--", 0) != 0 && t.size() > 2)   // -j2: a short option with its value
+      opt = sub->get_option_no_throw(t.substr(0, 2));
+    bool is_help = name == "-h" || name == "--help";
+    if (opt == nullptr && !is_help && t.rfind("--", 0) == 0) throw CLI::ExtrasError({t});   // an unknown --flag
+    if (opt == nullptr && !is_help) {
+      moved.push_back(t);
+      continue;
+    }
+    out.push_back(t);
+    bool takes_value = opt != nullptr && opt->get_expected_min() > 0 && t.find('=') == std::string::npos &&
+                       (t.rfind("--", 0) == 0 || t.size() == 2);
+    if (takes_value && i + 1 < args.size()) out.push_back(args[++i]);
+  }
+  if (!moved.empty()) {
+    out.push_back("--");
+    out.insert(out.end(), moved.begin(), moved.end());
+  }
+  return out;
+}
+
+}  // namespace
+
 }  // namespace dc::cli
 
 int main(int argc, char** argv) {
@@ -28,7 +84,9 @@ int main(int argc, char** argv) {
     runners[sub] = c.setup(*sub);
   }
   try {
-    app.parse(argc, argv);
+    std::vector<std::string> args = positional_minus(app, argc, argv);
+    std::reverse(args.begin(), args.end());   // CLI11 takes them in reverse order
+    app.parse(args);
   } catch (const CLI::ParseError& e) {
     int rc = app.exit(e);
     return rc == 0 ? 0 : kExitInputError;

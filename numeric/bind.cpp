@@ -6,6 +6,7 @@
 
 #include "numeric/exact.hpp"
 #include "numeric/reference.hpp"
+#include "derivations/kernel/ball.hpp"
 
 namespace dc::num {
 namespace {
@@ -77,8 +78,34 @@ std::string eval_formula(const Derivation& d, const std::string& label, const st
     throw std::domain_error("--digits " + std::to_string(digits) + " is outside [1, 1000]");
   const Formula f = formula(d, label);
   const GiNaC::exmap point = bind_point(d, f, parse_assignments(at));
-  const GiNaC::numeric v = reference_value(f.expr, point, digits);
-  return format_significant(v, digits);
+  // Certified: Arb encloses the value; the precision is raised until both ends of the
+  // enclosure round to the same `digits` significant digits, which are then exactly the
+  // correctly rounded value. No float of limited exponent range takes part, so a huge or tiny
+  // value is never printed as a wrong finite number.
+  const long want_bits = static_cast<long>(digits * 3.33) + 16;
+  std::string why = "the enclosure did not narrow";
+  for (long prec = want_bits + 48; prec <= (1L << 18); prec *= 2) {
+    kernel::Ball b = kernel::enclose_at(f.expr, &point, prec);
+    if (b.status == kernel::BallStatus::NotReal)
+      throw std::domain_error("the formula has no real value at this point (" + b.why + ")");
+    if (b.status == kernel::BallStatus::Pole)
+      throw std::domain_error("the formula is undefined at this point (" + b.why + ")");
+    if (b.status != kernel::BallStatus::Value) {
+      why = b.why;
+      continue;
+    }
+    GiNaC::numeric lo, hi;
+    if (!b.exact_bounds(lo, hi)) {   // beyond 2^(2^20): shown as 10^(x) once x is known well
+      if (b.rel_accuracy_bits() >= 48) return b.text(digits);
+      why = "a value beyond 2^(2^20) not yet enclosed tightly";
+      continue;
+    }
+    std::string a = format_significant(lo, digits), c = format_significant(hi, digits);
+    if (a == c) return a;
+    why = "the value lies in [" + format_significant(lo, 5) + ", " + format_significant(hi, 5) + "]";
+  }
+  throw std::range_error("the value could not be certified to " + std::to_string(digits) +
+                         " digits within the precision cap (" + why + "); it may be exactly 0");
 }
 
 }  // namespace dc::num

@@ -228,7 +228,9 @@ int sample_points(Checker& ck, const CrossCheckOptions& opt, Use&& use) {
 
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt) {
   std::vector<FormulaReport> reports;
+  int index = -1;
   for (const Formula& f : formulas(d)) {
+    if (++index, opt.only_formula >= 0 && index != opt.only_formula) continue;
     FormulaReport rep;
     rep.file = d.source.name;
     rep.label = f.label;

@@ -27,6 +27,7 @@ struct CrossCheckOptions {
   bool stress = true;
   int digits = 40;          // reference precision
   double typical_decades = 2;  // positive symbols: 10^U(-d, d)
+  int only_formula = -1;       // >= 0: check only formulas(d)[only_formula] (one worker task)
 };
 
 struct MethodStats {

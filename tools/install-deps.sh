@@ -4,7 +4,7 @@
 set -euo pipefail
 pkgs=(g++ cmake make pkg-config
       libginac-dev libcln-dev libflint-arb-dev libeigen3-dev catch2 libboost-dev libbenchmark-dev
-      nlohmann-json3-dev libcli11-dev gnuplot-nox
+      nlohmann-json3-dev libcli11-dev gnuplot-nox parallel
       texlive-latex-base texlive-latex-recommended texlive-pictures poppler-utils)
 missing=()
 for p in "${pkgs[@]}"; do

@@ -575,6 +575,23 @@ nlohmann::ordered_json claim_line_error(int line_no, const std::string& file, co
   return out;
 }
 
+nlohmann::ordered_json claim_line_undecided(const std::string& line, int line_no, const std::string& method,
+                                            const std::string& reason) {
+  nlohmann::ordered_json out;
+  // Only the id and the kind are read back from the line (it was valid enough to be tried).
+  nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+  if (j.is_object() && j.contains("id")) out["id"] = j.at("id");
+  out["line"] = line_no;
+  if (j.is_object() && j.contains("kind") && j.at("kind").is_string()) out["kind"] = j.at("kind");
+  Verdict v;
+  v.kind = VerdictKind::Undecided;
+  v.method = method;
+  v.reason = reason;
+  nlohmann::ordered_json vj = verdict_json(v);
+  for (auto& [k, val] : vj.items()) out[k] = val;
+  return out;
+}
+
 namespace {
 
 // The line with every byte that is not valid UTF-8 replaced by U+FFFD.
@@ -629,6 +646,7 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
   }
   if (!j.is_object()) return error("expected a JSON object per line");
   if (j.contains("id")) out["id"] = j.at("id");
+  out["line"] = line_no;
   if (!j.contains("kind"))
     return error("missing field 'kind' (one of equal, limit, antiderivative, series_first_order, solves_ode)");
   if (!j.at("kind").is_string())

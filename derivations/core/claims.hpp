@@ -45,7 +45,7 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
                     const ProveOptions& opt = {});
 
 // One line of a claim bank. Never throws: a malformed line gives a result with "error".
-// Keys in order: id, line, kind, verdict, method, (evidence), seconds | error.
+// Keys in order: id (when the line has one), line, kind, verdict, method, (evidence), seconds | error.
 nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
                                         const ProveOptions& opt = {});
 
@@ -53,5 +53,10 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
 // {"id" (when known), "line", "verdict": "error", "error": "file:N: error: message"}.
 nlohmann::ordered_json claim_line_error(int line_no, const std::string& file, const std::string& message,
                                         const nlohmann::json* id = nullptr);
+
+// The result of a claim that was tried but not finished (its budget ran out): {"id", "line",
+// "kind", "verdict": "undecided", "method", "reason"}.
+nlohmann::ordered_json claim_line_undecided(const std::string& line, int line_no, const std::string& method,
+                                            const std::string& reason);
 
 }  // namespace dc

@@ -1031,20 +1031,43 @@ struct Definition {
   const Node* body;
 };
 
-std::map<std::string, Definition> definitions(const Derivation& d) {
-  std::map<std::string, Definition> defs;
-  for (const auto& s : d.steps) {
-    if (s.rule.name != "definition" || s.claim.sides.size() < 2) continue;
-    const Node& lhs = s.claim.sides[0];
-    Definition def{{}, &s.claim.sides.back()};
-    if (lhs.kind == NodeKind::Call)
-      for (const auto& a : lhs.args) def.params.push_back(a.text);
-    else if (lhs.kind != NodeKind::Symbol)
-      continue;
-    defs[lhs.text] = def;
-  }
-  return defs;
+bool defines_name(const Step& s) {
+  return s.rule.name == "definition" && s.claim.sides.size() >= 2 &&
+         (s.claim.sides[0].kind == NodeKind::Call || s.claim.sides[0].kind == NodeKind::Symbol);
 }
+
+Definition definition_of(const Step& s) {
+  Definition def{{}, &s.claim.sides.back()};
+  if (s.claim.sides[0].kind == NodeKind::Call)
+    for (const auto& a : s.claim.sides[0].args) def.params.push_back(a.text);
+  return def;
+}
+
+// The definitions in force: name -> parameters and body (a later definition of the same name
+// wins, as before).
+class Definitions {
+ public:
+  explicit Definitions(const Derivation& d) : d_(d) {
+    if (!d.indexed)
+      for (const auto& s : d.steps)
+        if (defines_name(s)) local_[s.claim.sides[0].text] = definition_of(s);
+  }
+  bool empty() const { return d_.indexed ? d_.definition_index.empty() : local_.empty(); }
+  std::optional<Definition> find(const std::string& name) const {
+    if (d_.indexed) {
+      auto it = d_.definition_index.find(name);
+      if (it == d_.definition_index.end()) return std::nullopt;
+      return definition_of(d_.steps[it->second]);
+    }
+    auto it = local_.find(name);
+    if (it == local_.end()) return std::nullopt;
+    return it->second;
+  }
+
+ private:
+  const Derivation& d_;
+  std::map<std::string, Definition> local_;
+};
 
 Node substitute_params(const Node& n, const std::map<std::string, const Node*>& args) {
   if (n.kind == NodeKind::Symbol) {
@@ -1061,12 +1084,12 @@ Node substitute_params(const Node& n, const std::map<std::string, const Node*>& 
   return out;
 }
 
-Node resolve(const Node& n, const std::map<std::string, Definition>& defs, int depth) {
+Node resolve(const Node& n, const Definitions& defs, int depth) {
   if (depth > 64) throw InputError(n.pos, "definitions nested too deeply (more than 64 levels)", n.length);
   if (n.kind == NodeKind::Symbol) {
-    auto it = defs.find(n.text);
-    if (it != defs.end() && it->second.params.empty()) {
-      Node r = resolve(*it->second.body, defs, depth + 1);
+    auto def = defs.find(n.text);
+    if (def && def->params.empty()) {
+      Node r = resolve(*def->body, defs, depth + 1);
       r.parenthesized = true;
       r.pos = n.pos;
       return r;
@@ -1076,11 +1099,11 @@ Node resolve(const Node& n, const std::map<std::string, Definition>& defs, int d
   Node out = n;
   for (auto& a : out.args) a = resolve(a, defs, depth);
   if (n.kind == NodeKind::Call) {
-    auto it = defs.find(n.text);
-    if (it != defs.end() && !it->second.params.empty() && it->second.params.size() == out.args.size()) {
+    auto def = defs.find(n.text);
+    if (def && !def->params.empty() && def->params.size() == out.args.size()) {
       std::map<std::string, const Node*> args;
-      for (std::size_t i = 0; i < out.args.size(); ++i) args[it->second.params[i]] = &out.args[i];
-      Node r = resolve(substitute_params(*it->second.body, args), defs, depth + 1);
+      for (std::size_t i = 0; i < out.args.size(); ++i) args[def->params[i]] = &out.args[i];
+      Node r = resolve(substitute_params(*def->body, args), defs, depth + 1);
       r.parenthesized = true;
       r.pos = n.pos;
       return r;
@@ -1092,16 +1115,32 @@ Node resolve(const Node& n, const std::map<std::string, Definition>& defs, int d
 }  // namespace
 
 const Step* Derivation::find(const std::string& label) const {
+  if (indexed) {
+    auto it = label_index.find(label);
+    return it == label_index.end() ? nullptr : &steps[it->second];
+  }
   for (const auto& s : steps)
     if (s.label == label) return &s;
   return nullptr;
+}
+
+void Derivation::index() {
+  label_index.clear();
+  definition_index.clear();
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    label_index.emplace(steps[i].label, i);   // the first step of a label, as the scan finds it
+    if (defines_name(steps[i])) definition_index[steps[i].claim.sides[0].text] = i;
+  }
+  indexed = true;
 }
 
 Derivation parse_derivation(SourceText source) {
   source.text = normalize_text(std::move(source.text));
   SourceText copy = source;
   try {
-    return Reader(std::move(source)).run();
+    Derivation d = Reader(std::move(source)).run();
+    d.index();
+    return d;
   } catch (const InputError& e) {
     if (!e.line_text().empty() || e.pos().line < 1) throw;
     throw e.with_line_text(copy.line(e.pos().line));
@@ -1116,7 +1155,7 @@ Derivation load_derivation(const std::string& path) {
 }
 
 Node resolve_definitions(const Derivation& d, const Node& n) {
-  auto defs = definitions(d);
+  Definitions defs(d);
   if (defs.empty()) return n;
   return resolve(n, defs, 0);
 }
@@ -1139,7 +1178,7 @@ std::optional<InputError> erratum_error(const Derivation& d, const Step& s) {
 std::vector<GiNaC::ex> claim_sides(const Derivation& d, const Step& s) {
   const Relation& r = s.erratum ? s.erratum->corrected : s.claim;
   std::vector<GiNaC::ex> out;
-  auto defs = definitions(d);
+  Definitions defs(d);
   for (std::size_t i = 0; i < r.sides.size(); ++i) {
     // A definition's own left-hand side is the name being defined: keep it as a symbol.
     if (i == 0 && s.rule.name == "definition") out.push_back(to_ginac(r.sides[0], d.symbols));

@@ -70,6 +70,15 @@ struct Derivation {
   std::vector<Step> steps;
 
   const Step* find(const std::string& label) const;
+
+  // Built by index() (parse_derivation calls it): label -> step, and the steps `by definition`
+  // by the name they define, so lookups cost O(log n) and checking stays linear in the number
+  // of steps. A derivation built by hand is indexed on first use only if index() is called;
+  // otherwise lookups scan the steps.
+  void index();
+  std::map<std::string, std::size_t> label_index;
+  std::map<std::string, std::size_t> definition_index;
+  bool indexed = false;
 };
 
 // Read and parse a .dc file. Structural errors (syntax, duplicate labels, unknown rule,

@@ -362,16 +362,15 @@ class DocumentWriter {
       out += "\\end{gather}\n\n";
       run.clear();
     };
-    for (const Step& s : d.steps) {
-      if (!opt_.annotate && !s.erratum) {
+    for (std::size_t i = 0; i < d.steps.size(); ++i) {
+      const Step& s = d.steps[i];
+      const StepResult* r = checks && i < checks->results.size() ? &checks->results[i] : nullptr;
+      bool unchecked = opt_.mark_unchecked && r && !step_checked_ok(*r);
+      if (!opt_.annotate && !s.erratum && !unchecked) {
         run.push_back(&s);
         continue;
       }
       flush();
-      const StepResult* r = nullptr;
-      if (checks)
-        for (const auto& res : checks->results)
-          if (res.step == &s || (res.step && res.step->label == s.label)) r = &res;
       out += step(d, s, r);
     }
     flush();
@@ -394,6 +393,9 @@ class DocumentWriter {
     out += aligned ? "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}"
                    : latex_relation(claim, d.symbols, false);
     if (s.erratum) out += "\\footnotemark";
+    if (opt_.mark_unchecked && r && !step_checked_ok(*r))
+      out += "\\qquad\\text{\\textbf{NOT CHECKED: " + latex_escape_text(std::string(to_string(r->verdict.kind))) +
+             (r->verdict.holds() ? " with errors" : "") + "}}";
     if (tagged) out += "\n\\tag{" + latex_escape_text(s.tag) + "}";
     out += tagged ? "\n\\end{equation}\n" : "\n\\end{equation*}\n";
     if (s.erratum) {
@@ -510,10 +512,15 @@ std::string latex_escape_text(const std::string& text) {
   return out;
 }
 
+bool step_checked_ok(const StepResult& r) {
+  std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
+  return own == 0 && r.verdict.holds();
+}
+
 std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOptions& opt) {
   DocumentWriter w(opt);
   std::vector<const CheckSummary*> checks(ds.size(), nullptr);
-  if (opt.annotate && opt.checks) {
+  if ((opt.annotate || opt.mark_unchecked) && opt.checks) {
     if (opt.checks->size() != ds.size())
       throw std::invalid_argument("write_latex: one check summary per derivation is needed");
     checks = *opt.checks;

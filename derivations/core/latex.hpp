@@ -42,7 +42,13 @@ struct LatexOptions {
   // Check results for `annotate` (one per derivation, same order, from dc::check_derivation);
   // when null, the margin notes give the rules without verdicts.
   const std::vector<const CheckSummary*>* checks = nullptr;
+  // With `checks`: a step that did not hold (refuted, undecided, a step error) is set apart
+  // with a visible mark ("NOT CHECKED: refuted") — for `latex --allow-unchecked`.
+  bool mark_unchecked = false;
 };
+
+// Did this step hold (proved, numerically, or a premise), apart from a reported erratum?
+bool step_checked_ok(const struct StepResult& r);
 
 // A whole document (or fragment) with one section per derivation.
 std::string write_latex(const std::vector<const Derivation*>& derivations, const LatexOptions& opt);

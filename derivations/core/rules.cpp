@@ -1622,24 +1622,26 @@ int CheckSummary::exit_code(bool strict) const {
   return 0;
 }
 
+void CheckSummary::add(StepResult r) {
+  const Step& s = *r.step;
+  std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
+  if (r.erratum_reported) ++errata;
+  r.premise = s.rule.name == "given" || s.rule.name == "definition";
+  if (r.input_error) ++input_errors;
+  if (own_errors > 0) ++errors;
+  else if (r.premise && r.verdict.holds()) ++premises;
+  else switch (r.verdict.kind) {
+      case VerdictKind::Proved: ++proved; break;
+      case VerdictKind::HoldsNumerically: ++holds_numerically; break;
+      case VerdictKind::Refuted: ++refuted; break;
+      case VerdictKind::Undecided: ++undecided; break;
+    }
+  results.push_back(std::move(r));
+}
+
 CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt) {
   CheckSummary sum;
-  for (const auto& s : d.steps) {
-    StepResult r = check_step(d, s, opt);
-    std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
-    if (r.erratum_reported) ++sum.errata;
-    r.premise = s.rule.name == "given" || s.rule.name == "definition";
-    if (r.input_error) ++sum.input_errors;
-    if (own_errors > 0) ++sum.errors;
-    else if (r.premise && r.verdict.holds()) ++sum.premises;
-    else switch (r.verdict.kind) {
-        case VerdictKind::Proved: ++sum.proved; break;
-        case VerdictKind::HoldsNumerically: ++sum.holds_numerically; break;
-        case VerdictKind::Refuted: ++sum.refuted; break;
-        case VerdictKind::Undecided: ++sum.undecided; break;
-      }
-    sum.results.push_back(std::move(r));
-  }
+  for (const auto& s : d.steps) sum.add(check_step(d, s, opt));
   return sum;
 }
 

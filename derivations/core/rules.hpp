@@ -31,6 +31,8 @@ struct CheckSummary {
   int proved = 0, holds_numerically = 0, refuted = 0, undecided = 0, errors = 0, errata = 0;
   int input_errors = 0;   // steps whose references contradict each other (also counted in errors)
   int exit_code(bool strict) const;   // 0 / 1 / 2 / 3 as in docs/format.md
+  // Appends the result of the next step (r.step set) and counts it.
+  void add(StepResult r);
 };
 
 CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt = {});

@@ -66,6 +66,51 @@ std::string Ball::text(int sig) const {
   return "";
 }
 
+namespace {
+
+// man * 2^exp of a finite arf, exactly; false when |exp| is too large to write out.
+bool arf_to_numeric(const arf_t x, GiNaC::numeric& out, long max_exp_bits) {
+  if (arf_is_zero(x)) {
+    out = 0;
+    return true;
+  }
+  if (!arf_is_finite(x)) return false;
+  fmpz_t man, exp;
+  fmpz_init(man);
+  fmpz_init(exp);
+  arf_get_fmpz_2exp(man, exp, x);
+  bool ok = fmpz_fits_si(exp) && std::labs(fmpz_get_si(exp)) <= max_exp_bits;
+  if (ok) {
+    char* digits = fmpz_get_str(nullptr, 10, man);
+    long e = fmpz_get_si(exp);
+    GiNaC::numeric m(digits);
+    flint_free(digits);
+    out = e >= 0 ? m * GiNaC::numeric(2).power(e) : m / GiNaC::numeric(2).power(-e);
+  }
+  fmpz_clear(man);
+  fmpz_clear(exp);
+  return ok;
+}
+
+}  // namespace
+
+bool Ball::exact_bounds(GiNaC::numeric& lo, GiNaC::numeric& hi, long max_exp_bits) const {
+  if (status != BallStatus::Value) return false;
+  arf_t a;
+  arf_init(a);
+  arb_get_lbound_arf(a, impl->v, ARF_PREC_EXACT);
+  bool ok = arf_to_numeric(a, lo, max_exp_bits);
+  arb_get_ubound_arf(a, impl->v, ARF_PREC_EXACT);
+  ok = ok && arf_to_numeric(a, hi, max_exp_bits);
+  arf_clear(a);
+  return ok;
+}
+
+long Ball::rel_accuracy_bits() const {
+  if (status != BallStatus::Value) return 0;
+  return arb_rel_accuracy_bits(impl->v);
+}
+
 double Ball::to_double() const {
   if (status != BallStatus::Value) return 0;
   return arf_get_d(arb_midref(impl->v), ARF_RND_NEAR);

@@ -48,6 +48,12 @@ class Ball {
   std::string text(int sig = 20) const;
   // Nearest double (may be +-inf or 0 for values outside double's range).
   double to_double() const;
+  // The enclosure's end points as exact rationals (lo <= value <= hi), when both fit in
+  // 2^±max_exp_bits; false otherwise (or when not a Value).
+  bool exact_bounds(GiNaC::numeric& lo, GiNaC::numeric& hi, long max_exp_bits = 1L << 20) const;
+  // Bits of relative accuracy of the enclosure (Arb's arb_rel_accuracy_bits); negative or
+  // small when the radius is as large as the value.
+  long rel_accuracy_bits() const;
 
   struct Impl;
   std::unique_ptr<Impl> impl;

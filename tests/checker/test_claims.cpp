@@ -49,9 +49,12 @@ TEST_CASE("a refuted claim carries its counterexample", "[claims]") {
   CHECK(r.at("counterexample").is_object());
   CHECK(r.at("counterexample").size() >= 2);
   CHECK(r.contains("seconds"));
-  // key order is stable: id, kind, verdict, method first
+  // key order is stable: id, line, kind, verdict, method first
   auto it = r.begin();
   CHECK(it.key() == "id");
+  ++it;
+  CHECK(it.key() == "line");
+  CHECK(it.value() == 1);
   ++it;
   CHECK(it.key() == "kind");
   ++it;

@@ -35,11 +35,12 @@ struct Run {
 
 // `timeout_s` > 0 runs the binary under coreutils timeout (exit 124 if it had to stop it), so
 // a test of something that must not block cannot hang the suite.
-inline Run run(const std::vector<std::string>& args, int timeout_s = 0) {
+// `shell_prefix` runs before the binary in the same shell (e.g. "ulimit -v 3145728;").
+inline Run run(const std::vector<std::string>& args, int timeout_s = 0, const std::string& shell_prefix = "") {
   static int counter = 0;
   std::string errfile = "derivcheck_cli_test_stderr_";
   errfile.append(std::to_string(::getpid())).append("_").append(std::to_string(++counter)).append(".txt");
-  std::string cmd;
+  std::string cmd = shell_prefix;
   if (timeout_s > 0) cmd.append("timeout ").append(std::to_string(timeout_s)).append(" ");
   cmd += quote(DERIVCHECK_CLI);
   for (const auto& a : args) cmd.append(" ").append(quote(a));

@@ -191,22 +191,24 @@ TEST_CASE("to_ginac: limits", "[to_ginac][limit]") {
   CHECK(conv_error("limit(x, x, x + 1)").message() == "the limit point must not contain the variable 'x'");
 }
 
-TEST_CASE("to_ginac: runaway powers are refused at the exponent, quickly", "[to_ginac][limits]") {
+TEST_CASE("to_ginac: exact powers too large to hold are refused at the exponent, quickly", "[to_ginac][limits]") {
   auto t0 = std::chrono::steady_clock::now();
   InputError a = conv_error("2^(10^10)");
   CHECK(a.pos().col == 3);
   CHECK_THAT(a.message(), Catch::StartsWith("exponent 10000000000 is too large: the result would have about"));
   CHECK_THAT(a.message(), Catch::EndsWith("digits (limit 10000)"));
-  InputError b = conv_error("(m1 + m2)^100000");
-  CHECK(b.pos().col == 11);
-  CHECK(b.message() == "exponent 100000 is too large (limit 1000)");
   InputError c = conv_error("2^(10^(10^10))");
   CHECK(c.pos().col == 7);  // the inner power already fails
-  CHECK(conv_error("x^(10001/2)").message() == "exponent 10001/2 is too large (limit 1000)");
-  CHECK(conv_error("pi^(-1001)").message() == "exponent -1001 is too large (limit 1000)");
   CHECK(conv_error("10^12000").pos().col == 4);
   auto ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  INFO("six runaway powers refused in " << ms << " ms");
+  INFO("four runaway powers refused in " << ms << " ms");
+
+  // A symbolic base with a huge exponent is a valid expression, kept unexpanded: what working
+  // with it costs is bounded by the step's budgets (exec::Pool), not refused here.
+  CHECK(conv("(m1 + m2)^100000").is_equal(GiNaC::pow(sym("m1") + sym("m2"), 100000)));
+  CHECK(conv("x^(10^30)").is_equal(GiNaC::pow(sym("x"), numeric("1000000000000000000000000000000"))));
+  CHECK_NOTHROW(conv("x^(10001/2)"));
+  CHECK_NOTHROW(conv("pi^(-1001)"));
 
   // Within the limits: exact results.
   CHECK(GiNaC::ex_to<numeric>(conv("10^9999")).is_integer());

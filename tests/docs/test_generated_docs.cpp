@@ -36,11 +36,12 @@ TEST_CASE("docs/handout9.md is what 'derivcheck map' prints now", "[docs]") {
   const std::string src = DERIVCHECK_SOURCE_DIR;
   int status = 0;
   std::string generated = run(std::string("cd '") + src + "' && '" + DERIVCHECK_CLI +
-                                  "' map derivations/handout9 --tests tests",
+                                  "' map derivations/handout9 --tests tests --title 'Handout 9' --ctest-prefix 'derivation: handout9/'",
                               &status);
   REQUIRE(status == 0);
   std::string committed = slurp(src + "/docs/handout9.md");
-  INFO("regenerate with: build/derivcheck map derivations/handout9 --tests tests -o docs/handout9.md");
+  INFO("regenerate with: build/derivcheck map derivations/handout9 --tests tests --title 'Handout 9' "
+       "--ctest-prefix 'derivation: handout9/' -o docs/handout9.md");
   REQUIRE(generated == committed);
 }
 

@@ -190,13 +190,24 @@ TEST_CASE("options: symbolic only, numeric only, probe points, digits", "[prove]
   REQUIRE(w.digits == 100);
 }
 
-TEST_CASE("resource limit: a runaway expansion is refused, not attempted", "[prove][limits]") {
+TEST_CASE("resource limit: a runaway expansion is not attempted; the probe still decides", "[prove][limits]") {
   test::Table T = standard_table();
   ex a = T["a"], b = T["b"];
-  Verdict v = prove_equal(GiNaC::pow(a + b, 100000), GiNaC::pow(a + b, 100000) + 1, T.t);
+  // false: refuted at a point, without expanding
+  Verdict v = prove_equal(GiNaC::pow(a + b, 100000), GiNaC::pow(a, 100000) + 100000 * GiNaC::pow(a, 99999) * b, T.t);
   CAPTURE(describe(v));
-  REQUIRE(v.kind == VerdictKind::Undecided);
-  REQUIRE(v.reason.rfind("resource limit:", 0) == 0);
+  REQUIRE(v.kind == VerdictKind::Refuted);
+  // true: agrees rigorously at every point, never "proved" (nothing symbolic ran)
+  Verdict w = prove_equal(GiNaC::pow(a + b, 100000), GiNaC::pow(a + b, 99999) * (b + a), T.t);
+  CAPTURE(describe(w));
+  REQUIRE(w.kind != VerdictKind::Proved);
+  REQUIRE(w.kind != VerdictKind::Refuted);
+  // with the probe off: undecided, saying why
+  ProveOptions symbolic_only;
+  symbolic_only.numeric = false;
+  Verdict u = prove_equal(GiNaC::pow(a + b, 100000), GiNaC::pow(a + b, 100000) + 1, T.t, symbolic_only);
+  REQUIRE(u.kind == VerdictKind::Undecided);
+  REQUIRE(u.reason.rfind("resource limit:", 0) == 0);
   REQUIRE(estimate_expanded_terms(GiNaC::pow(a + b, 3)) == Approx(4));
   REQUIRE(estimate_expanded_terms(GiNaC::pow(a + b + T["x"], 2)) == Approx(6));
 }
