@@ -62,7 +62,7 @@ struct Budget {
   std::size_t max_coeff_nodes = 3000; // tree size of one series coefficient (after normal)
   int max_relative_order = 32;        // the most orders of w kept beyond a series' first term
   int max_terms_per_series = 60;      // terms kept in one series
-  double max_seconds = 8.0;           // wall clock
+  double max_seconds = 1.5;           // wall clock (below the CLI's 2 s default task budget)
 
   // counters
   long steps = 0;
