@@ -175,6 +175,12 @@ L("geometric_sum", "(1 - e^n)/(1 - e)", "n", "oo", "1/(1 - e)", a={"e": "in (0,1
 L("abs_sign_assumed_above", "abs(x - 1)/(x - 1)", "x", "1", "1", assume="x > 1", src="one side by an assumption")
 L("abs_sign_symbolic_point", "abs(x - a)/(x - a)", "x", "a", "1", assume="x > a", src="one side by an assumption")
 L("abs_sign_two_sided", "abs(x - 1)/(x - 1)", "x", "1", "undefined")
+# --- found by a differential test against SymPy (SymPy 1.14 gives the other value)
+L("atan_inv_below_tower", "exp(exp(atan(1/x)))", "x", "0", "exp(exp(-pi/2))", dir="-", src="differential test: SymPy says exp(exp(pi/2))")
+L("sin_base_power", "((x + 2)*sin(1/x))^(x^2 + 4)", "x", "-oo", "0", src="differential test: SymPy says oo; the base is 1 + 2/x + ... < 1")
+L("bounded_plus_pole", "sin(sin(1/x)) + 3/x^(4/3)", "x", "0", "oo", dir="+", src="differential test")
+L("oscillating_denominator", "(1 + 1/abs(x))/(cos(x) - 2*x)", "x", "oo", "0", src="differential test")
+L("vanishes_identically", "(sin(x)^2 + cos(x)^2 - 1)/x^4", "x", "0", "0", src="identically zero: every series coefficient vanishes")
 # --- honest gaps: the truth is known, the engine may not decide
 L("gap_param_sign", "a*x", "x", "oo", "oo", expected="refuted", a={"a": "real"}, src="gap: a <= 0 makes it false; the sign of a is not declared")
 L("gap_x_sin", "x*sin(x)", "x", "oo", "undefined", src="gap: unbounded oscillation")
