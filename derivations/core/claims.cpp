@@ -344,7 +344,20 @@ class ClaimLine {
     }
     if (kind == "limit") {
       ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
-      LimitResult L = compute_limit(lhs, x, p, point_infinite_, table_);
+      int dir = limit_direction();
+      LimitResult L = compute_limit(lhs, x, p, point_infinite_, dir, table_);
+      const std::string numeric = L.confirmed_numerically ? ", confirmed numerically" : "";
+      if (L.does_not_exist) {
+        Verdict v;
+        v.method = "limit (" + L.method + numeric + ")";
+        v.kind = rhs_undefined_ ? VerdictKind::Proved : VerdictKind::Refuted;
+        v.detail = L.reason;
+        if (!rhs_undefined_) {
+          v.lhs_value = "undefined";
+          v.rhs_value = j_.at("rhs").get<std::string>();
+        }
+        return v;
+      }
       if (!L.ok) {
         Verdict v;
         v.kind = VerdictKind::Undecided;
@@ -352,7 +365,16 @@ class ClaimLine {
         v.reason = L.reason;
         return v;
       }
-      std::string how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+      std::string how = "limit (" + L.method + numeric + ")";
+      if (rhs_undefined_) {
+        Verdict v;
+        v.method = how;
+        v.kind = VerdictKind::Refuted;
+        v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
+        v.rhs_value = "undefined";
+        v.detail = "the limit exists: it is " + v.lhs_value;
+        return v;
+      }
       if (L.infinite != 0 || rhs_infinite_ != 0) {
         Verdict v;
         v.method = how;
@@ -424,6 +446,7 @@ class ClaimLine {
   std::optional<Node> point_node_;
   int point_infinite_ = 0;
   int rhs_infinite_ = 0;
+  bool rhs_undefined_ = false;   // limit: "rhs": "undefined" (the limit does not exist)
   std::vector<int> initial_orders_;
 
   std::string text_field(const std::string& f, const nlohmann::json& j) {
@@ -444,11 +467,28 @@ class ClaimLine {
 
   Node expr(const std::string& f) {
     std::string t = text_field(f, j_);
-    if (f == "rhs" && (t == "oo" || t == "-oo") && j_.value("kind", "") == "limit") {
-      rhs_infinite_ = t == "oo" ? 1 : -1;
-      return parse_field(f, "0");
+    if (f == "rhs" && j_.value("kind", "") == "limit") {
+      if (t == "oo" || t == "+oo" || t == "-oo") {
+        rhs_infinite_ = t == "-oo" ? -1 : 1;
+        return parse_field(f, "0");
+      }
+      if (t == "undefined") {
+        rhs_undefined_ = true;
+        return parse_field(f, "0");
+      }
     }
     return parse_field(f, t);
+  }
+
+  // limit: "dir": "+" (from above), "-" (from below); absent or "+-": two-sided.
+  int limit_direction() {
+    if (!j_.contains("dir")) return 0;
+    std::string t = text_field("dir", j_);
+    if (t == "+") return 1;
+    if (t == "-") return -1;
+    if (t == "+-" || t.empty()) return 0;
+    throw LineError{"field 'dir' must be \"+\" (from above), \"-\" (from below) or \"+-\" (two-sided), got '" + t +
+                    "'"};
   }
 
   std::optional<Node> point() {

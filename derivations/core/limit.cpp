@@ -8,6 +8,7 @@
 
 #include "derivations/core/prove.hpp"
 #include "derivations/core/prove_detail.hpp"
+#include "derivations/limits/limits.hpp"
 
 namespace dc {
 
@@ -52,174 +53,272 @@ std::string classify_series_failure(const std::string& what) {
          "essential singularity exp(-1/eps) or a logarithm)";
 }
 
-// Confirm numerically that f -> L (or diverges with sign `inf`) along x = point +- 10^-k, or
-// x = +-10^k at infinity, at a random admissible point of the other symbols (50 digits).
-// Returns "" when confirmed, "?" when nothing could be evaluated, else the reason it failed.
-std::string confirm_numerically(const ex& f, const ex& x, const ex& point, int at_infinity,
-                                const ex& L, int inf, const SymbolTable& ctx) {
-  d::PointSampler sampler({f}, ctx);
-  d::Rng rng(20261121);
-  const long ks[] = {8, 16, 24, 32};
-  for (int attempt = 0; attempt < 30; ++attempt) {
+}  // namespace
+
+namespace {
+
+namespace L = dc::limits;
+
+bool x_constrained(const ex& x, const SymbolTable& ctx) {
+  for (const Constraint& c : ctx.constraints())
+    if (c.lhs.has(x) || c.rhs.has(x)) return true;
+  return false;
+}
+
+// Do the assumptions (constraints such as x > 1) that involve x allow x = point + side*eps?
+// Checked at a few admissible points of the other symbols: 1 at all of them, 0 at none,
+// -1 mixed or not evaluable.
+int constraints_allow(const ex& x, const ex& point, int side, const SymbolTable& ctx) {
+  std::vector<const Constraint*> mine;
+  for (const Constraint& c : ctx.constraints())
+    if (c.lhs.has(x) || c.rhs.has(x)) mine.push_back(&c);
+  if (mine.empty()) return 1;
+  std::vector<ex> exprs{point, x};
+  for (const Constraint* c : mine) exprs.push_back(c->lhs - c->rhs);
+  d::PointSampler sampler(exprs, ctx);
+  d::Rng rng(20261207);
+  int yes = 0, no = 0;
+  for (int attempt = 0; attempt < 12 && yes + no < 4; ++attempt) {
     bool adm = false;
-    GiNaC::exmap p = sampler.draw(rng, false, &adm);
-    if (!adm) continue;
-    p.erase(x);
-    ex fp, Lp;
-    try {
-      fp = f.subs(p, GiNaC::subs_options::no_pattern);
-      Lp = L.subs(p, GiNaC::subs_options::no_pattern);
-    } catch (const std::exception&) {
-      continue;
-    }
-    d::RealValue lv;
-    if (inf == 0) {
-      lv = d::eval_real(Lp, 50);
-      if (!lv.ok) continue;
-    }
-    bool any_side = false;
-    for (int side : {+1, -1}) {
-      if (at_infinity != 0 && side == -1) break;
-      std::vector<numeric> errs, vals;
-      bool ok = true;
-      for (long k : ks) {
-        ex xv = at_infinity != 0 ? ex(at_infinity * pow10(k)) : point + side * pow10(-k);
-        d::RealValue fv;
-        try {
-          fv = d::eval_real(fp.subs(x == xv), 50);
-        } catch (const std::exception&) {
-          fv.ok = false;
-        }
-        if (!fv.ok) {
-          ok = false;
-          break;
-        }
-        vals.push_back(fv.value);
-        if (inf == 0) {
-          numeric scale = std::max(numeric(1), GiNaC::abs(lv.value));
-          errs.push_back(GiNaC::abs(fv.value - lv.value) / scale);
-        }
-      }
-      if (!ok) continue;  // not defined on this side (e.g. sqrt left of 0)
-      any_side = true;
-      std::string at = at_infinity != 0 ? (at_infinity > 0 ? "x = 1e32" : "x = -1e32")
-                                        : (side > 0 ? "x = point + 1e-32" : "x = point - 1e-32");
-      if (inf == 0) {
-        if (!(errs.back() < numeric(1, 1000000)) || errs.back() > errs.front())
-          return "the value is not confirmed numerically: relative distance " +
-                 d::format_number(errs.back(), 6) + " at " + at;
-      } else {
-        const numeric& last = vals.back();
-        bool sign_ok = inf > 0 ? last.is_positive() : last.is_negative();
-        if (!sign_ok || GiNaC::abs(last) < GiNaC::abs(vals.front()) || GiNaC::abs(last) < 1000000)
-          return std::string("divergence to ") + (inf > 0 ? "+" : "-") +
-                 "infinity is not confirmed numerically at " + at;
-      }
-    }
-    if (any_side) return "";
+    GiNaC::exmap p = sampler.draw(rng, 0, &adm);
+    // admissible for the other symbols: the constraints without x must hold
+    bool others = true;
+    for (const Constraint& c : ctx.constraints())
+      if (!(c.lhs.has(x) || c.rhs.has(x)) && !c.holds_at(p)) others = false;
+    if (!others) continue;
+    p[x] = point.subs(p, GiNaC::subs_options::no_pattern) + side * pow10(-40);
+    bool all = true;
+    for (const Constraint* c : mine) all = all && c->holds_at(p);
+    (all ? yes : no) += 1;
   }
-  return "?";
+  if (yes > 0 && no == 0) return 1;
+  if (no > 0 && yes == 0) return 0;
+  return -1;
+}
+
+// Can x approach `point` from `side` inside its declared domain and the assumptions on it?
+// 1 yes, 0 no, -1 unknown.
+int side_allowed(const ex& x, const ex& point, int side, const SymbolTable& ctx) {
+  const int by_assumptions = constraints_allow(x, point, side, ctx);
+  if (by_assumptions == 0) return 0;
+  const Domain dom = d::domain_of(x, ctx);
+  if (dom.kind == Domain::Kind::Real) return by_assumptions;
+  // the conditions "point + side*eps lies inside": v - lo > 0 and/or hi - v > 0
+  std::vector<ex> must_be_positive;
+  const ex v = point + side * pow10(-40);
+  switch (dom.kind) {
+    case Domain::Kind::Positive:
+    case Domain::Kind::Nonnegative: must_be_positive.push_back(v); break;
+    case Domain::Kind::Negative: must_be_positive.push_back(-v); break;
+    case Domain::Kind::Interval:
+      must_be_positive.push_back(v - dom.lo);
+      must_be_positive.push_back(dom.hi - v);
+      break;
+    default: return 1;
+  }
+  bool constant = GiNaC::is_a<numeric>(point) || point.info(GiNaC::info_flags::real) ||
+                  d::ordered_symbols(point, ctx).empty();
+  int verdict = by_assumptions;
+  for (const ex& c : must_be_positive) {
+    if (constant) {
+      kernel::Ball b = kernel::enclose_sign(c, 128, 1 << 12);
+      if (b.positive()) continue;
+      if (b.negative() || b.exact_zero()) return 0;
+      verdict = -1;
+    } else {
+      if (d::provably_positive(c, ctx)) continue;
+      if (d::provably_positive(-c, ctx)) return 0;
+      verdict = -1;
+    }
+  }
+  return verdict;
+}
+
+// "mu -> 0+", "x -> oo"
+std::string side_text(const ex& x, const ex& point, int at_infinity, int dir) {
+  const std::string name = GiNaC::ex_to<GiNaC::symbol>(x).get_name();
+  if (at_infinity) return name + (at_infinity > 0 ? " -> oo" : " -> -oo");
+  std::string p = d::canon_text(point);
+  if (GiNaC::is_a<GiNaC::add>(point) || GiNaC::is_a<GiNaC::mul>(point)) p = "(" + p + ")";
+  return name + " -> " + p + (dir > 0 ? "+" : "-");
+}
+
+std::string outcome_text(const L::Outcome& o, const SymbolTable& ctx) {
+  switch (o.kind) {
+    case L::Outcome::Kind::Value: return d::canon_text(o.value);
+    case L::Outcome::Kind::PlusInfinity: return "oo";
+    case L::Outcome::Kind::MinusInfinity: return "-oo";
+    case L::Outcome::Kind::DoesNotExist: return "does not exist";
+    case L::Outcome::Kind::NotReal: return "not real";
+    case L::Outcome::Kind::Undecided: return "undecided";
+  }
+  return "";
+}
+
+// One side: the algorithm, then the numeric witness. A contradicted value becomes Undecided.
+L::Outcome checked_side(const ex& f, const ex& x, const ex& point, int at_infinity, int dir, const SymbolTable& ctx,
+                        L::SequenceCheck& check) {
+  L::Outcome o = L::one_sided_limit(f, x, point, at_infinity, dir, ctx);
+  if (!o.decided_limit()) return o;
+  check = L::check_sequence(f, x, point, at_infinity, dir, o, ctx);
+  if (check.kind == L::SequenceCheck::Kind::Contradicted) {
+    L::Outcome bad;
+    bad.kind = L::Outcome::Kind::Undecided;
+    bad.reason = "internal inconsistency (please report): " + o.method + " gives " + outcome_text(o, ctx) + " for " +
+                 side_text(x, point, at_infinity, dir) + ", but the numeric sequence contradicts it: " + check.note;
+    return bad;
+  }
+  return o;
+}
+
+void set_value(LimitResult& r, const L::Outcome& o) {
+  r.ok = true;
+  r.infinite = o.kind == L::Outcome::Kind::PlusInfinity ? 1 : (o.kind == L::Outcome::Kind::MinusInfinity ? -1 : 0);
+  r.value = r.infinite ? ex(0) : o.value;
+}
+
+void set_not_ok(LimitResult& r, const L::Outcome& o, const std::string& prefix) {
+  r.ok = false;
+  r.does_not_exist = o.kind == L::Outcome::Kind::DoesNotExist || o.kind == L::Outcome::Kind::NotReal;
+  if (o.kind == L::Outcome::Kind::NotReal)
+    r.reason = prefix + "the limit does not exist: f has no real value close to the point (" + o.reason + ")";
+  else
+    r.reason = prefix + o.reason;
+  r.method = o.method;
+}
+
+// Are two one-sided finite limits equal (1), different (0), or undecided (-1)?
+int same_value(const ex& a, const ex& b, const SymbolTable& ctx) {
+  ex diff = a - b;
+  try {
+    if (GiNaC::normal(diff).is_zero()) return 1;
+  } catch (const std::exception&) {
+  }
+  if (d::provably_nonzero(diff, ctx)) return 0;
+  Verdict v = prove_equal(a, b, ctx);
+  if (v.kind == VerdictKind::Proved) return 1;
+  if (v.kind == VerdictKind::Refuted && d::ordered_symbols(diff, ctx).empty()) return 0;
+  return -1;
 }
 
 }  // namespace
 
-LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& point, int at_infinity,
+LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& point, int at_infinity, int dir,
                           const SymbolTable& ctx) {
   LimitResult res;
+  res.dir = at_infinity ? 0 : dir;
   const ex x = resolve_symbol(x_in, f);
-  bool have = false;
-  // 1. direct substitution (a finite point where f is defined: no pole is hit)
-  if (at_infinity == 0) {
-    try {
-      ex v = f.subs(x == point);
-      if (!v.has(x)) {
-        res.value = v;
-        res.method = "substitution";
-        have = true;
-      }
-    } catch (const std::exception&) {
-      // a pole or 0/0 at the point: fall through to the series
-    }
-  }
-  // 2. series in eps, x = point + eps or x = +-1/eps
-  if (!have) {
-    GiNaC::possymbol eps("eps");
-    ex g;
-    try {
-      g = at_infinity != 0 ? f.subs(x == at_infinity / ex(eps)) : f.subs(x == point + eps);
-    } catch (const std::exception& e) {
-      res.reason = std::string("substitution failed: ") + e.what();
-      return res;
-    }
-    bool found = false;
-    for (int n : {1, 2, 3, 4, 6, 8, 12}) {
-      ex s;
-      try {
-        s = g.series(eps == 0, n);
-      } catch (const std::exception& e) {
-        res.reason = classify_series_failure(e.what());
-        return res;
-      }
-      if (!GiNaC::is_a<GiNaC::pseries>(s)) {
-        res.reason = "series in eps did not produce a power series";
-        return res;
-      }
-      const auto& ps = GiNaC::ex_to<GiNaC::pseries>(s);
-      int lo = ps.ldegree(eps);
-      // the last exponent of a truncated series is the Order term, not a coefficient
-      int hi = ps.is_terminating() ? ps.degree(eps) : ps.degree(eps) - 1;
-      for (int k = lo; k <= hi; ++k) {
-        ex c;
-        try {
-          c = GiNaC::normal(ps.coeff(eps, k));
-        } catch (const std::exception&) {
-          continue;
-        }
-        if (c.is_zero()) continue;
-        if (c.has(eps)) {
-          res.reason = "the leading coefficient of the series depends on eps (a logarithmic term such as eps*log(eps))";
-          return res;
-        }
-        found = true;
-        if (k > 0) {
-          res.value = 0;
-        } else if (k == 0) {
-          res.value = c;
-        } else {
-          bool pos = d::provably_positive(c, ctx), neg = d::provably_positive(-c, ctx);
-          if (!pos && !neg) {
-            res.reason = "f diverges like eps^" + std::to_string(k) +
-                         " but the sign of its coefficient is not evident from the domains";
-            return res;
-          }
-          if (at_infinity == 0 && (-k) % 2 == 1) {
-            res.reason = "f has a pole of odd order at the point: the one-sided limits are +infinity and -infinity";
-            return res;
-          }
-          res.infinite = pos ? 1 : -1;
-          res.value = 0;
-        }
-        break;
-      }
-      if (found) break;
-    }
-    if (!found) {
-      res.reason = "every coefficient up to eps^11 vanishes: the limit could not be determined";
-      return res;
-    }
-    res.method = at_infinity != 0 ? "series at 0 of eps = 1/x" : "series";
-  }
-  // 3. numeric confirmation along a sequence approaching the point
-  std::string why = confirm_numerically(f, x, point, at_infinity, res.value, res.infinite, ctx);
-  if (why.empty()) {
-    res.confirmed_numerically = true;
-  } else if (why != "?") {
-    res.ok = false;
-    res.reason = why;
+  if (at_infinity != 0) {
+    L::SequenceCheck check;
+    L::Outcome o = checked_side(f, x, point, at_infinity, 0, ctx, check);
+    if (o.decided_limit()) set_value(res, o);
+    else set_not_ok(res, o, "");
+    res.method = o.method.empty() ? res.method : o.method;
+    res.confirmed_numerically = check.kind == L::SequenceCheck::Kind::Confirmed;
+    res.numeric_note = check.note;
     return res;
   }
-  res.ok = true;
+  std::vector<int> sides;
+  for (int s : {+1, -1}) {
+    if (dir != 0 && s != dir) continue;
+    int a = side_allowed(x, point, s, ctx);
+    if (a == -1) {
+      res.reason = std::string("cannot tell whether x can approach the point from ") + (s > 0 ? "above" : "below") +
+                   " within its declared domain" + (x_constrained(x, ctx) ? " and the assumptions" : "");
+      return res;
+    }
+    if (a == 1) sides.push_back(s);
+  }
+  if (sides.empty()) {
+    const std::string where = x_constrained(x, ctx) ? " within its declared domain and the assumptions"
+                                                    : " within its declared domain";
+    res.reason = dir != 0 ? std::string("x cannot approach the point from ") + (dir > 0 ? "above" : "below") + where
+                          : "x cannot approach the point from either side" + where;
+    return res;
+  }
+  std::vector<L::Outcome> out;
+  std::vector<L::SequenceCheck> checks(sides.size());
+  for (std::size_t i = 0; i < sides.size(); ++i)
+    out.push_back(checked_side(f, x, point, 0, sides[i], ctx, checks[i]));
+  auto from = [](int s) { return std::string(s > 0 ? "from above: " : "from below: "); };
+  const std::string xname = GiNaC::ex_to<GiNaC::symbol>(x).get_name();
+  const std::string via_domain =
+      dir == 0 && sides.size() == 1
+          ? " (the only side in the declared domain of " + xname + (x_constrained(x, ctx) ? " and the assumptions)" : ")")
+          : "";
+  if (sides.size() == 1) {
+    const L::Outcome& o = out[0];
+    if (o.decided_limit()) set_value(res, o);
+    else set_not_ok(res, o, "");
+    res.method = o.method + ", " + side_text(x, point, 0, sides[0]) + via_domain;
+    res.confirmed_numerically = checks[0].kind == L::SequenceCheck::Kind::Confirmed;
+    res.numeric_note = checks[0].note;
+    return res;
+  }
+  // two sides
+  const L::Outcome &up = out[0], &down = out[1];
+  res.confirmed_numerically = checks[0].kind == L::SequenceCheck::Kind::Confirmed &&
+                              checks[1].kind == L::SequenceCheck::Kind::Confirmed;
+  res.numeric_note = from(+1) + checks[0].note + "; " + from(-1) + checks[1].note;
+  for (std::size_t i = 0; i < 2; ++i)
+    if (out[i].kind == L::Outcome::Kind::Undecided) {
+      set_not_ok(res, out[i], from(sides[i]));
+      return res;
+    }
+  // f not real on one side: the limit is the other side's (the limit within f's domain)
+  for (std::size_t i = 0; i < 2; ++i) {
+    const L::Outcome &o = out[i], &other = out[1 - i];
+    if (o.kind == L::Outcome::Kind::NotReal && other.kind != L::Outcome::Kind::NotReal) {
+      if (other.decided_limit()) set_value(res, other);
+      else set_not_ok(res, other, from(sides[1 - i]));
+      res.method = other.method + ", " + side_text(x, point, 0, sides[1 - i]) +
+                   " (f has no real value on the other side: " + o.reason + ")";
+      res.confirmed_numerically = checks[1 - i].kind == L::SequenceCheck::Kind::Confirmed;
+      res.numeric_note = checks[1 - i].note;
+      return res;
+    }
+  }
+  if (up.kind == L::Outcome::Kind::NotReal) {   // both sides
+    set_not_ok(res, up, "");
+    return res;
+  }
+  for (std::size_t i = 0; i < 2; ++i)
+    if (out[i].kind == L::Outcome::Kind::DoesNotExist) {
+      set_not_ok(res, out[i], from(sides[i]));
+      return res;
+    }
+  const std::string both = up.method == down.method ? up.method : up.method + " / " + down.method;
+  auto differ = [&](const std::string& why) {
+    res.ok = false;
+    res.does_not_exist = true;
+    res.method = both + ", one-sided limits";
+    res.reason = "the limit does not exist: the one-sided limits differ (" + why + ")";
+  };
+  if (up.infinite() || down.infinite()) {
+    if (up.kind == down.kind) {
+      set_value(res, up);
+      res.method = both + ", both one-sided limits agree";
+    } else {
+      differ(outcome_text(up, ctx) + " from above, " + outcome_text(down, ctx) + " from below");
+    }
+    return res;
+  }
+  int same = same_value(up.value, down.value, ctx);
+  if (same == 1) {
+    set_value(res, up);
+    res.method = both + ", both one-sided limits agree";
+  } else if (same == 0) {
+    differ(outcome_text(up, ctx) + " from above, " + outcome_text(down, ctx) + " from below");
+  } else {
+    res.reason = "the one-sided limits " + outcome_text(up, ctx) + " (from above) and " + outcome_text(down, ctx) +
+                 " (from below) could not be compared";
+  }
   return res;
+}
+
+LimitResult compute_limit(const ex& f, const GiNaC::symbol& x, const ex& point, int at_infinity,
+                          const SymbolTable& ctx) {
+  return compute_limit(f, x, point, at_infinity, 0, ctx);
 }
 
 ex first_order(const ex& f, const std::vector<GiNaC::symbol>& smalls) {

@@ -10,21 +10,32 @@
 namespace dc {
 
 struct LimitResult {
-  bool ok = false;
-  GiNaC::ex value;        // the limit (may be +-infinity as the symbol `oo` is not used:
-                          // infinite limits are reported via `infinite` = +1/-1)
-  int infinite = 0;
-  std::string method;     // "substitution", "series at 0 of eps = 1/x", "series"
-  std::string reason;     // when !ok: why it is undecided (Puiseux, essential singularity, ...)
-  bool confirmed_numerically = false;  // evaluated along a sequence approaching the point
+  bool ok = false;        // a limit was found: `value`, or an infinity (`infinite`)
+  GiNaC::ex value;        // the finite limit (may contain parameters); 0 when infinite
+  int infinite = 0;       // +1 / -1: the limit is +infinity / -infinity
+  // Certified that the limit does not exist (one-sided limits differ, oscillation, f has no
+  // real value near the point). ok is false then (callers that only know ok/value stay safe)
+  // and `reason` says why.
+  bool does_not_exist = false;
+  int dir = 0;            // the direction asked for: +1 from above, -1 from below, 0 two-sided
+  std::string method;     // the evidence: "Gruntz (mrv), mu -> 0+", "..., both one-sided limits agree"
+  std::string reason;     // when !ok: why it is undecided (or why it does not exist)
+  bool confirmed_numerically = false;  // Arb balls along a sequence approaching the point agree
+  std::string numeric_note;            // what the sequence showed (also when not confirmed)
 };
 
-// lim_{x -> point} f. `point` is a finite exact value, or pass at_infinity = +1 / -1.
-// Method: try direct substitution when f is continuous there; else substitute x = point + eps
-// (or x = 1/eps at infinity), series in eps, check the leading term has non-negative degree
-// and an eps-free coefficient; then confirm numerically along eps = 10^-k (CLN, 50 digits).
-LimitResult compute_limit(const GiNaC::ex& f, const GiNaC::symbol& x, const GiNaC::ex& point,
-                          int at_infinity, const SymbolTable& ctx);
+// lim_{x -> point} f. `point` is a finite exact value, or pass at_infinity = +1 / -1 (then
+// `point` and `dir` are ignored). dir: +1 from above (x -> point+), -1 from below, 0 two-sided
+// (both one-sided limits that the declared domain of x allows must agree).
+// Method: Gruntz's most-rapidly-varying-subexpression algorithm (derivations/limits/) on
+// x = point +- 1/t or x = +-t, t -> oo, with budgets (an exhausted budget is undecided, reason
+// "budget: ..."); then evaluation with Arb balls along x_k -> point: a certified
+// contradiction makes the result undecided ("internal inconsistency").
+LimitResult compute_limit(const GiNaC::ex& f, const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity, int dir,
+                          const SymbolTable& ctx);
+// Two-sided (dir = 0).
+LimitResult compute_limit(const GiNaC::ex& f, const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity,
+                          const SymbolTable& ctx);
 
 // First order in the small quantities `smalls` (each scaled by eps, series to O(eps^2), eps=1):
 // used for "higher-order term dm*dv neglected".
