@@ -32,7 +32,7 @@ Outcome one_sided_limit(const ex& f, const ex& x, const ex& point, int at_infini
     return undecided("the expression could not be rewritten for the limit (GiNaC failed on the substitution)");
   }
   Budget b = budget;
-  b.start = std::chrono::steady_clock::now();
+  b.start = cpu_seconds();
   Gruntz G(t, ctx, b);
   Outcome out;
   try {
