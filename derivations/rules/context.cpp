@@ -5,6 +5,7 @@
 
 #include "derivations/core/functions.hpp"
 #include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
 
 namespace dc::rules {
 
@@ -82,16 +83,6 @@ ex Atomizer::operator()(const ex& e) {
     return s;
   }
   return e.map(*this);
-}
-
-void collect_symbols(const ex& e, std::vector<ex>& out) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    for (const auto& o : out)
-      if (o.is_equal(e)) return;
-    out.push_back(e);
-    return;
-  }
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
 }
 
 bool free_of_unknowns(const ex& e) {
@@ -196,6 +187,12 @@ Substitutions StepContext::substitutions(const std::vector<RuleArg>& args, std::
     if (labels && out.size() > n) labels->push_back(a.label);
   }
   return out;
+}
+
+std::vector<ex> StepContext::symbols_in(const std::vector<ex>& es) const {
+  GiNaC::lst all;
+  for (const auto& e : es) all.append(e);
+  return detail::ordered_symbols(all, d.symbols);
 }
 
 int StepContext::declaration_index(const ex& s) const {

@@ -48,8 +48,6 @@ struct Atomizer : GiNaC::map_function {
   ex restore(const ex& e) const { return back.empty() ? e : e.subs(back, GiNaC::subs_options::no_pattern); }
 };
 
-// The symbols of e, each once, in the order they are met.
-void collect_symbols(const ex& e, std::vector<ex>& out);
 // No symbol and no abstract application: a constant (possibly irrational: pi - 3).
 bool free_of_unknowns(const ex& e);
 bool has_any(const ex& e, const std::vector<ex>& syms);
@@ -96,6 +94,8 @@ struct StepContext {
   Substitutions substitutions(const std::vector<RuleArg>& args, std::vector<Eq>* rest,
                               std::vector<std::string>* labels = nullptr) const;
 
+  // The symbols of the expressions, each once, in declaration order (then by name).
+  std::vector<ex> symbols_in(const std::vector<ex>& es) const;
   int declaration_index(const ex& s) const;
   bool real_domain(const ex& s) const;
 };

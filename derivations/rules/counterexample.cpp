@@ -124,8 +124,7 @@ Gap counterexample_gap(StepContext& c, const Reduction& red, const std::vector<E
     involved.push_back(c.atoms.restore(el.coef));
     if (el.function_atom) involved.push_back(c.atoms.restore(el.var));
   }
-  std::vector<ex> free;   // symbols left open by the point and the eliminations
-  for (const auto& e : involved) collect_symbols(e, free);
+  std::vector<ex> free = c.symbols_in(involved);   // symbols left open by the point and the eliminations
   free.erase(std::remove_if(free.begin(), free.end(),
                             [&](const ex& s) {
                               if (P.count(s)) return true;

@@ -109,9 +109,7 @@ std::vector<Candidate> candidates(StepContext& c, const ex& num, const ex& hint,
     k.is_function = is_function;
     out.push_back(std::move(k));
   };
-  std::vector<ex> syms;
-  collect_symbols(num, syms);
-  for (const auto& s : syms) consider(s, false);
+  for (const auto& s : c.symbols_in({num})) consider(s, false);
   std::vector<ex> fns;
   collect_functions(num, fns);
   collect_symbol_powers(num, fns);

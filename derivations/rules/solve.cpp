@@ -134,8 +134,8 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
     // parameter such as g in a single equation is not eliminated: that would use the equation
     // up instead of checking it).
     std::vector<ex> elim = others, in_eqs;
-    for (const auto& q : back) collect_symbols(q.e, in_eqs);
-    for (const auto& sym : in_eqs) {
+    for (const auto& q : back) in_eqs.push_back(q.e);
+    for (const auto& sym : c.symbols_in(in_eqs)) {
       int count = 0;
       for (const auto& q : back) count += q.e.has(sym) ? 1 : 0;
       if (count >= 2 && !G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
