@@ -72,9 +72,12 @@ class PointSampler {
   PointSampler(const std::vector<GiNaC::ex>& exprs, const SymbolTable& ctx);
   const std::vector<GiNaC::ex>& symbols() const { return syms_; }
   const std::vector<const Constraint*>& constraints() const { return cons_; }
-  // A random point of magnitude tier 0-3 (sample_value), or tier 4: a tier-0 point with one
-  // symbol moved just inside the boundary of one assumption. `admissible` says whether every
-  // applicable constraint holds there.
+  // A random point of magnitude tier 0-3 (sample_value); tier 4: a tier-0 point with one
+  // symbol moved just inside the boundary of one assumption; tier 5: a point drawn inside the
+  // region the assumptions leave, symbol by symbol, each within the bounds the assumptions
+  // linear in it give once the others have values (near those bounds, between a bound and 0,
+  // or an ordinary distance inside; without assumptions, a tier-0 point). `admissible` says
+  // whether every applicable constraint holds there.
   GiNaC::exmap draw(Rng& rng, int tier, bool* admissible) const;
   // "m1 = 7/3, m2 = 5/2" in declaration order, and the same as pairs.
   std::vector<std::pair<std::string, std::string>> describe(const GiNaC::exmap& p) const;

@@ -1,6 +1,7 @@
 // Sampling points from the declared domain (prove_detail.hpp): exact rationals for each
 // symbol, and admissible points for the probe (derivations/kernel/probe.cpp), the limit helper
 // and quadrature.
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -166,14 +167,98 @@ void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const st
   }
 }
 
+// A value inside the interval (lo, hi) that a symbol's domain and the assumptions leave it
+// (either end may be missing; nullopt when both are): just inside one end, between an end and 0
+// (the values of the other sign that the end allows: y in (-1, 0) for y > -1), near 0 from
+// either side when the interval contains it, or an ordinary distance inside.
+std::optional<numeric> value_between(const std::optional<numeric>& lo, const std::optional<numeric>& hi, Rng& rng) {
+  auto magnitude = [&](double lo_exp, double hi_exp) {   // an exact rational in 10^[lo_exp, hi_exp]
+    double x = std::pow(10.0, lo_exp + (hi_exp - lo_exp) * rng.uniform());
+    return rational_near(x, x * 1e-3, rng);
+  };
+  auto fraction = [&] { return rational_near(0.02 + 0.96 * rng.uniform(), 1e-4, rng); };   // in (0, 1)
+  if (lo && hi) {
+    numeric w = *hi - *lo;
+    switch (rng.below(4)) {
+      case 0: return *lo + w * magnitude(-15, -1);
+      case 1: return *hi - w * magnitude(-15, -1);
+      case 2:
+        if (lo->is_negative() && hi->is_positive()) {
+          numeric m = std::min(-*lo, *hi) * magnitude(-15, -1);
+          return rng.below(2) ? m : -m;
+        }
+        [[fallthrough]];
+      default: return *lo + w * fraction();
+    }
+  }
+  if (!lo && !hi) return std::nullopt;
+  const numeric end = lo ? *lo : *hi;
+  const int inward = lo ? 1 : -1;
+  const numeric scale = end.is_zero() ? numeric(1) : GiNaC::abs(end);
+  switch (rng.below(3)) {
+    case 0: return end + inward * scale * magnitude(-15, -1);
+    case 1:
+      if (lo ? end.is_negative() : end.is_positive()) return end * fraction();
+      [[fallthrough]];
+    default: return end + inward * magnitude(-2, 2);
+  }
+}
+
+// Tier 5: the symbols one after another, each drawn inside the interval that its domain and the
+// assumptions linear in it leave once the symbols drawn before it have their values; the next
+// symbol is the one most assumptions bound at that moment (x > y, y > -1: y in (-1, oo) first,
+// then x in (y, oo)), so a chain of assumptions is followed to its ends and across 0.
+GiNaC::exmap draw_within(const std::vector<ex>& syms, const std::vector<Domain>& doms,
+                         const std::vector<const Constraint*>& cons, Rng& rng) {
+  using Op = Constraint::Op;
+  GiNaC::exmap p;
+  std::vector<bool> done(syms.size(), false);
+  for (std::size_t step = 0; step < syms.size(); ++step) {
+    std::vector<std::vector<LinearBound>> bounds(syms.size());
+    std::vector<std::size_t> best;
+    std::size_t most = 0;
+    for (std::size_t i = 0; i < syms.size(); ++i) {
+      if (done[i]) continue;
+      for (const Constraint* c : cons)
+        if (auto b = linear_bound(*c, syms[i], p, exact_value); b && b->op != Op::Ne) bounds[i].push_back(*b);
+      if (best.empty() || bounds[i].size() > most) best.clear(), most = bounds[i].size();
+      if (bounds[i].size() == most) best.push_back(i);
+    }
+    const std::size_t i = best[rng.below(best.size())];
+    done[i] = true;
+    std::optional<numeric> lo, hi;
+    const Domain& d = doms[i];
+    if (d.kind == Domain::Kind::Positive || d.kind == Domain::Kind::Nonnegative) lo = numeric(0);
+    if (d.kind == Domain::Kind::Negative) hi = numeric(0);
+    if (d.kind == Domain::Kind::Interval) {
+      if (auto v = exact_value(d.lo)) lo = *v;
+      if (auto v = exact_value(d.hi)) hi = *v;
+    }
+    for (const auto& b : bounds[i]) {
+      if ((b.op == Op::Gt || b.op == Op::Ge) && (!lo || b.at > *lo)) lo = b.at;
+      if ((b.op == Op::Lt || b.op == Op::Le) && (!hi || b.at < *hi)) hi = b.at;
+    }
+    std::optional<numeric> v;
+    if (!(lo && hi && *lo >= *hi)) v = value_between(lo, hi, rng);
+    if (!v || v->is_integer() || !d.contains(*v)) v = sample_value(d, rng, 0);
+    p[syms[i]] = *v;
+  }
+  return p;
+}
+
 }  // namespace
 
 GiNaC::exmap PointSampler::draw(Rng& rng, int tier, bool* admissible) const {
   GiNaC::exmap p;
-  // tier 4: an ordinary point moved to the boundary of one of the assumptions
-  int base = tier == 4 ? 0 : tier;
-  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, base);
-  if (tier == 4 && !cons_.empty()) move_to_boundary(*cons_[rng.below(cons_.size())], syms_, doms_, p, rng);
+  if (tier == 5 && !cons_.empty()) {
+    p = draw_within(syms_, doms_, cons_, rng);
+  } else {
+    // tier 4: an ordinary point moved to the boundary of one of the assumptions; tier 5 without
+    // assumptions: an ordinary point
+    int base = tier >= 4 ? 0 : tier;
+    for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, base);
+    if (tier == 4 && !cons_.empty()) move_to_boundary(*cons_[rng.below(cons_.size())], syms_, doms_, p, rng);
+  }
   bool ok = true;
   for (const Constraint* c : cons_)
     if (!c->holds_at(p)) {

@@ -53,14 +53,20 @@ void set_refuted(Verdict& v, const PointComparison& c) {
   v.max_rel_diff = c.rel_diff;
 }
 
-// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2] (one of them moved
-// next to the boundary of an assumption when there is one), two in
+// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2] (with assumptions,
+// two of them drawn inside the region the assumptions leave, symbol by symbol, and one moved
+// next to the boundary of an assumption), two in
 // 10^[-6, 6] and two in 10^[-30, 30] (for interval domains: within 1e-9 of the lower and of
 // the upper end), so large and tiny values and the ends of the declared domain are tested too
-// (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found).
-int tier_of(int attempt, bool failing) {
-  if (failing) return 1 + attempt % 3;
+// (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found; so is one
+// that fails only where a chain of assumptions x > y > -1 lets x be negative).
+// `failing`: most points so far were unusable (every fourth is then drawn inside the region
+// the assumptions leave).
+int tier_of(int attempt, bool failing, bool assumptions) {
+  if (failing) return assumptions && attempt % 4 == 3 ? 5 : 1 + attempt % 3;
   switch (attempt % 10) {
+    case 1:
+    case 3: return assumptions ? 5 : 0;   // inside the region the assumptions leave
     case 5: return 4;   // next to the boundary of an assumption (an ordinary point without one)
     case 6:
     case 7: return 1;
@@ -168,7 +174,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   double max_rel = 0;
   long max_digits = 0;
   for (; attempts < max_attempts && agreed < need; ++attempts) {
-    int tier = tier_of(attempts, attempts >= need * 10);
+    int tier = tier_of(attempts, attempts >= need * 10, !sampler.constraints().empty());
     bool admissible = false;
     GiNaC::exmap p = sampler.draw(rng, tier, &admissible);
     if (!admissible) {
