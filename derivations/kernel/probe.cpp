@@ -32,9 +32,12 @@ CompareOptions compare_options(const ProveOptions& opt) {
   return co;
 }
 
-bool certified_counterexample(const PointComparison& c) {
-  using K = PointComparison::Kind;
-  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
+// An agreement is confirmed once at four times the digits: a false claim whose difference
+// lies below the tolerance (cos(10^-40*x) = 1 differs by ~1e-80) separates there.
+CompareOptions confirmation(const CompareOptions& co) {
+  CompareOptions co4 = co;
+  co4.start_digits = 4 * std::max<long>(co.start_digits, -co.tol_exponent + 15);
+  return co4;
 }
 
 // "lhs = 1.5, rhs = 2.25" / "lhs = 0.4 is real, rhs is not real (log of a negative number)"
@@ -128,10 +131,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
   std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
 
-  // An agreement is confirmed once at four times the digits: a false claim whose difference
-  // lies below the tolerance (cos(10^-40*x) = 1 differs by ~1e-80) separates there.
-  CompareOptions co4 = co;
-  co4.start_digits = 4 * std::max<long>(co.start_digits, -co.tol_exponent + 15);
+  const CompareOptions co4 = confirmation(co);
   if (sampler.symbols().empty() && !abstract) {
     PointComparison c = compare_constants(lhs, rhs, co);
     if (c.kind == K::Agree) {
@@ -266,6 +266,21 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   v.reason = why.str();
   v.detail = v.reason;
   return v;
+}
+
+bool certified_counterexample(const PointComparison& c) {
+  using K = PointComparison::Kind;
+  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
+}
+
+PointComparison compare_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& point, const ProveOptions& opt) {
+  const CompareOptions co = compare_options(opt);
+  PointComparison c = compare_at(lhs, rhs, &point, co);
+  if (c.kind == PointComparison::Kind::Agree) {
+    PointComparison c4 = compare_at(lhs, rhs, &point, confirmation(co));
+    if (certified_counterexample(c4)) c = c4;
+  }
+  return c;
 }
 
 // A symbolic proof is re-witnessed at one admissible point: if the balls there certify a
