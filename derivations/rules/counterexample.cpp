@@ -11,24 +11,6 @@ namespace dc::rules {
 
 namespace {
 
-// The counterexample of a Verdict as exact values of the declared symbols (false when a name
-// or value cannot be read back).
-bool point_values(const StepContext& c, const Verdict& v, GiNaC::exmap& out) {
-  for (const auto& [name, value] : v.point) {
-    const SymbolInfo* info = c.d.symbols.find(name);
-    if (!info || info->is_function) return false;
-    try {
-      GiNaC::parser reader;
-      ex x = reader(value);
-      if (!free_of_unknowns(x)) return false;
-      out[info->sym] = x;
-    } catch (const std::exception&) {
-      return false;
-    }
-  }
-  return true;
-}
-
 // Is `value` (the symbol's value at the counterexample) inside the declared domain of the
 // symbol `s`? "" when it is, otherwise why not (`formula`: the value before the point was
 // substituted, for the message).
@@ -133,6 +115,22 @@ Gap gap_at(StepContext& c, const Reduction& red, const std::vector<Eq>& eqs,
 }
 
 }  // namespace
+
+bool point_values(const StepContext& c, const Verdict& v, GiNaC::exmap& out) {
+  for (const auto& [name, value] : v.point) {
+    const SymbolInfo* info = c.d.symbols.find(name);
+    if (!info || info->is_function) return false;
+    try {
+      GiNaC::parser reader;
+      ex x = reader(value);
+      if (!free_of_unknowns(x)) return false;
+      out[info->sym] = x;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+  return true;
+}
 
 Gap counterexample_gap(StepContext& c, const Reduction& red, const std::vector<Eq>& eqs, const Verdict& v) {
   GiNaC::exmap P;

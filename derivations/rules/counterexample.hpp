@@ -17,6 +17,10 @@ struct Gap {
   const Elimination* elimination = nullptr;
 };
 
+// The counterexample of a Verdict as exact values of the declared symbols (false when a name
+// or value cannot be read back).
+bool point_values(const StepContext& c, const Verdict& v, GiNaC::exmap& out);
+
 // A refutation found on the reduced sides is a counterexample to the step only when the point,
 // extended by the eliminated quantities computed from it, satisfies the references: every
 // leftover equation holds there (or is an identity), no coefficient that was divided by

@@ -5,7 +5,8 @@
 //     and prove_equal compares the claim with it.
 //   - Otherwise the claim is substituted back: with u = G and the other unknowns (and the
 //     quantities that only link the equations) eliminated, each equation must reduce to an
-//     identity; the declared domain of u picks the root.
+//     identity; G must lie in the declared domain of u, and no other root may
+//     (solve_roots.cpp).
 //   - A claim that is not `u = ...` for an unknown must follow from the equations.
 #include <algorithm>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/elimination.hpp"
 #include "derivations/rules/follows.hpp"
+#include "derivations/rules/solve.hpp"
 
 namespace dc::rules {
 
@@ -43,16 +45,6 @@ bool determines(StepContext& c, const std::vector<ex>& nums, const std::vector<e
   } while (++tries < 64 && std::prev_permutation(pick.begin(), pick.end()));
   return false;
 }
-
-// The unknowns of the rule, each a symbol (expressions such as sin(theta) get stand-ins).
-struct Unknowns {
-  std::vector<ex> syms;
-  GiNaC::exmap standin, standback;
-  ex in(StepContext& c, const ex& e) const { return c.atoms(e).subs(standin, GiNaC::subs_options::no_pattern); }
-  ex out(StepContext& c, const ex& e) const {
-    return c.atoms.restore(e.subs(standback, GiNaC::subs_options::no_pattern));
-  }
-};
 
 // The linear case: lsolve, then the claim compared with the solution. nullopt when the
 // equations are not linear in the unknowns or lsolve does not determine them.
@@ -115,9 +107,10 @@ std::optional<Verdict> solve_linear(StepContext& c, const Unknowns& u, const std
   return all.result();
 }
 
-// The nonlinear case for the claim u = G (u the unknown `which`): G substituted back.
-Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>& E, const std::vector<ex>& sd,
-                        std::size_t which) {
+// The nonlinear case for the claim u = G (u the unknown `which`): G substituted back, and G
+// must be the only root (solve_roots.cpp). `eqs`: the equations E with their labels.
+Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>& E, const std::vector<Eq>& eqs,
+                        const std::vector<ex>& sd, std::size_t which) {
   const ex& lhs = u.syms[which];
   Combiner all;
   std::vector<ex> others;
@@ -164,7 +157,7 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
         all.add(proved("claim substituted back (normal)"), "");
     }
     // The declared domain of the unknown picks the root: v0 : negative for v0 = -sqrt(...).
-    std::string root_note = " (other roots are not excluded)";
+    std::string root_note;
     if (GiNaC::is_a<GiNaC::symbol>(u.out(c, lhs))) {
       const SymbolInfo* info = c.d.symbols.find(GiNaC::ex_to<GiNaC::symbol>(u.out(c, lhs)));
       if (info && info->domain.kind != Domain::Kind::Real && info->domain.kind != Domain::Kind::Interval) {
@@ -176,6 +169,13 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
         root_note = " (the root is the one in the declared domain: " + info->name + " " + info->domain.to_string() + ")";
       }
     }
+    // ... and no other root may lie in the domain (y = w from y^2 = w^2 with y real is false at y = -w)
+    std::string how;
+    Verdict only = only_root(c, u, eqs, which, G, elim, how);
+    all.add(only, "", true);
+    if (only.kind == VerdictKind::Refuted) root_note = " (another root lies in the declared domain)";
+    else if (!only.holds()) root_note = " (other roots are not excluded)";
+    else if (root_note.empty()) root_note = " (" + how + ")";
     c.res.derived = "nonlinear in the unknowns: the claim " + c.text(u.out(c, lhs)) + " = " + c.text(u.out(c, G)) +
                     " was substituted into the equations" + root_note;
   }
@@ -202,7 +202,11 @@ Verdict solve(StepContext& c, const Relation& claim) {
     u.syms.push_back(e);
   }
   std::vector<ex> E;
-  for (auto& q : eqs) E.push_back(u.in(c, q.e));
+  std::vector<Eq> in_eqs;   // E with the labels
+  for (auto& q : eqs) {
+    E.push_back(u.in(c, q.e));
+    in_eqs.push_back({E.back(), ex(), q.from, q.also});
+  }
   for (std::size_t i = 0; i < u.syms.size(); ++i) {
     bool appears = false;
     for (const auto& e : E) appears = appears || e.has(u.syms[i]);
@@ -216,7 +220,7 @@ Verdict solve(StepContext& c, const Relation& claim) {
   // must reduce to an identity.
   ex lhs = u.in(c, sd[0]);
   for (std::size_t i = 0; i < u.syms.size(); ++i)
-    if (lhs.is_equal(u.syms[i])) return substitute_back(c, u, E, sd, i);
+    if (lhs.is_equal(u.syms[i])) return substitute_back(c, u, E, in_eqs, sd, i);
   std::vector<ex> preferred;
   for (auto& x : u.syms) preferred.push_back(u.out(c, x));
   return links_follow(c, sd, eqs, "solve (elimination)", preferred);
