@@ -32,18 +32,23 @@ int severity(VerdictKind k) {
 }
 }  // namespace
 
-Verdict undecided(const std::string& method, const std::string& reason) {
+namespace {
+Verdict verdict(VerdictKind kind, const std::string& method) {
   Verdict v;
-  v.kind = VerdictKind::Undecided;
+  v.kind = kind;
   v.method = method;
+  return v;
+}
+}  // namespace
+
+Verdict undecided(const std::string& method, const std::string& reason) {
+  Verdict v = verdict(VerdictKind::Undecided, method);
   v.reason = reason;
   return v;
 }
 
 Verdict proved(const std::string& method, const std::string& detail) {
-  Verdict v;
-  v.kind = VerdictKind::Proved;
-  v.method = method;
+  Verdict v = verdict(VerdictKind::Proved, method);
   v.detail = detail;
   return v;
 }
