@@ -167,16 +167,26 @@ void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const st
   }
 }
 
-// A value inside the interval (lo, hi) that a symbol's domain and the assumptions leave it
+// A value inside the interval (lo, hi) that a symbol's domain `d` and the assumptions leave it
 // (either end may be missing; nullopt when both are): just inside one end, between an end and 0
 // (the values of the other sign that the end allows: y in (-1, 0) for y > -1), near 0 from
-// either side when the interval contains it, or an ordinary distance inside.
-std::optional<numeric> value_between(const std::optional<numeric>& lo, const std::optional<numeric>& hi, Rng& rng) {
+// either side when the interval contains it, or an ordinary point: an ordinary draw from the
+// domain (sample_value, tier 0) that falls inside, so that inside the interval the points are
+// spread as the other draws are (a claim false on part of (1, 3) is met as often).
+std::optional<numeric> value_between(const std::optional<numeric>& lo, const std::optional<numeric>& hi,
+                                     const Domain& d, Rng& rng) {
   auto magnitude = [&](double lo_exp, double hi_exp) {   // an exact rational in 10^[lo_exp, hi_exp]
     double x = std::pow(10.0, lo_exp + (hi_exp - lo_exp) * rng.uniform());
     return rational_near(x, x * 1e-3, rng);
   };
   auto fraction = [&] { return rational_near(0.02 + 0.96 * rng.uniform(), 1e-4, rng); };   // in (0, 1)
+  auto ordinary = [&](const numeric& fallback) {
+    for (int k = 0; k < 16; ++k) {
+      numeric v = sample_value(d, rng, 0);
+      if ((!lo || v > *lo) && (!hi || v < *hi)) return v;
+    }
+    return fallback;
+  };
   if (lo && hi) {
     numeric w = *hi - *lo;
     switch (rng.below(4)) {
@@ -188,7 +198,7 @@ std::optional<numeric> value_between(const std::optional<numeric>& lo, const std
           return rng.below(2) ? m : -m;
         }
         [[fallthrough]];
-      default: return *lo + w * fraction();
+      default: return ordinary(*lo + w * fraction());
     }
   }
   if (!lo && !hi) return std::nullopt;
@@ -200,7 +210,7 @@ std::optional<numeric> value_between(const std::optional<numeric>& lo, const std
     case 1:
       if (lo ? end.is_negative() : end.is_positive()) return end * fraction();
       [[fallthrough]];
-    default: return end + inward * magnitude(-2, 2);
+    default: return ordinary(end + inward * magnitude(-2, 2));
   }
 }
 
@@ -239,7 +249,7 @@ GiNaC::exmap draw_within(const std::vector<ex>& syms, const std::vector<Domain>&
       if ((b.op == Op::Lt || b.op == Op::Le) && (!hi || b.at < *hi)) hi = b.at;
     }
     std::optional<numeric> v;
-    if (!(lo && hi && *lo >= *hi)) v = value_between(lo, hi, rng);
+    if (!(lo && hi && *lo >= *hi)) v = value_between(lo, hi, d, rng);
     if (!v || v->is_integer() || !d.contains(*v)) v = sample_value(d, rng, 0);
     p[syms[i]] = *v;
   }
