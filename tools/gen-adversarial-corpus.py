@@ -381,6 +381,16 @@ claim(A, "false", "as_chain_allows_negative", "abs(x)", "x", "x > y > -1 still a
       assume="x > y, y > -1", w={"x": "-1/2", "y": "-3/4"})
 claim(A, "false", "as_square_constraint", "sqrt(x^2)", "x", "x^2 > 1 allows x < -1", assume="x^2 > 1",
       w={"x": "-2"})
+claim(A, "false", "as_chain3_allows_negative", "abs(z)", "z", "z > y > x > -1 still allows z in (-1, 0)",
+      assume="z > y, y > x, x > -1", w={"x": "-3/4", "y": "-1/2", "z": "-1/4"})
+claim(A, "false", "as_chain_upper_allows_positive", "sqrt(x^2)", "-x",
+      "x < y < 10^-6 still allows x in (0, 10^-6), where sqrt(x^2) = x", assume="x < y, y < 10^(-6)",
+      w={"x": "10^(-8)", "y": "10^(-7)"})
+claim(A, "false", "as_chain_scaled_allows_negative", "abs(x)", "x", "2x > y > -1/1000 allows x in (-1/2000, 0)",
+      assume="2*x > y, y > -1/1000", w={"x": "-1/4000", "y": "-3/4000"})
+claim(A, "true", "as_true_chain_positive", "abs(x)", "x", "x > y > 0", assume="x > y, y > 0")
+claim(A, "true", "as_true_chain3_positive", "sqrt(z^2)", "z", "z > y > x > 1/1000",
+      assume="z > y, y > x, x > 1/1000")
 claim(A, "true", "as_true_cube_constraint", "sqrt(x^2)", "x", "x^3 > 1 means x > 1", assume="x^3 > 1")
 claim(A, "true", "as_true_product_positive", "abs(x*y)", "x*y", "x > 0 and y > x make both positive",
       assume="x > 0, y > x")

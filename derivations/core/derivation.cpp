@@ -955,14 +955,19 @@ class Reader {
     return true;
   }
 
-  RuleArg label_arg(const Span& s, std::size_t b, std::size_t e) {
+  // An argument over s.text[b, e): its position, length and text.
+  static RuleArg spanned(const Span& s, std::size_t b, std::size_t e) {
     RuleArg a;
     a.pos = s.at(b);
     a.length = static_cast<int>(e - b);
-    if (!plain_identifier(s, b, e))
-      fail(a.pos, "expected a step label, found '" + s.text.substr(b, e - b) + "'", a.length);
-    a.kind = RuleArg::Kind::Label;
     a.label = s.text.substr(b, e - b);
+    return a;
+  }
+
+  RuleArg label_arg(const Span& s, std::size_t b, std::size_t e) {
+    RuleArg a = spanned(s, b, e);
+    if (!plain_identifier(s, b, e)) fail(a.pos, "expected a step label, found '" + a.label + "'", a.length);
+    a.kind = RuleArg::Kind::Label;
     check_ref(a.label, a.pos);
     return a;
   }
@@ -977,10 +982,7 @@ class Reader {
 
   RuleArg ref_or_equation(const Span& s, std::size_t b, std::size_t e) {
     if (plain_identifier(s, b, e)) return label_arg(s, b, e);
-    RuleArg a;
-    a.pos = s.at(b);
-    a.length = static_cast<int>(e - b);
-    a.label = s.text.substr(b, e - b);
+    RuleArg a = spanned(s, b, e);
     Relation rel = relation(s, b, e, "a label or 'x = value'");
     if (rel.sides.size() != 2)
       fail(a.pos, "expected a label or an equation 'x = value', found '" + a.label + "'", a.length);
@@ -991,10 +993,7 @@ class Reader {
   }
 
   RuleArg symbol_arg(const Span& s, std::size_t b, std::size_t e) {
-    RuleArg a;
-    a.pos = s.at(b);
-    a.length = static_cast<int>(e - b);
-    a.label = s.text.substr(b, e - b);
+    RuleArg a = spanned(s, b, e);
     if (!plain_identifier(s, b, e)) fail(a.pos, "expected a symbol name, found '" + a.label + "'", a.length);
     const SymbolInfo* info = d_.symbols.find(a.label);
     if (!info || info->is_function)
@@ -1005,10 +1004,7 @@ class Reader {
   }
 
   RuleArg value_arg(const Span& s, std::size_t b, std::size_t e) {
-    RuleArg a;
-    a.pos = s.at(b);
-    a.length = static_cast<int>(e - b);
-    a.label = s.text.substr(b, e - b);
+    RuleArg a = spanned(s, b, e);
     a.kind = RuleArg::Kind::Value;
     a.value = expression(s, b, e, "a value");
     bool infinite = (a.value.kind == NodeKind::Symbol && a.value.text == "oo") ||

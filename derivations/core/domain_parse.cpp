@@ -19,20 +19,6 @@ const char* kExpected =
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
-// Position of text[off] given that text[0] is at `origin`.
-SourcePos pos_at(std::string_view text, const SourcePos& origin, std::size_t off) {
-  SourcePos p = origin;
-  for (std::size_t i = 0; i < off && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++p.line;
-      p.col = 1;
-    } else {
-      ++p.col;
-    }
-  }
-  return p;
-}
-
 // A constant bound: numbers, pi, + - * / and small integer powers. Exact.
 GiNaC::ex constant_value(const Node& n) {
   switch (n.kind) {
@@ -98,13 +84,13 @@ Domain parse_domain(std::string_view text, const SourcePos& pos) {
   if (i >= e || (text[i] != '[' && text[i] != '(')) {
     std::size_t w = b;
     while (w < e && !is_space(text[w])) ++w;
-    throw InputError(pos_at(text, pos, b), "unknown domain '" + std::string(text.substr(b, w - b)) + "'; " + kExpected,
+    throw InputError(position_in(text, pos, b), "unknown domain '" + std::string(text.substr(b, w - b)) + "'; " + kExpected,
                      static_cast<int>(w - b));
   }
   const std::size_t open = i;
   const char close_c = text[e - 1];
   if (close_c != ']' && close_c != ')')
-    throw InputError(pos_at(text, pos, e - 1),
+    throw InputError(position_in(text, pos, e - 1),
                      std::string("expected ']' or ')' to close the interval opened with '") + text[open] + "'");
   // The comma separating the bounds, outside any parentheses inside a bound.
   std::size_t comma = std::string_view::npos;
@@ -115,19 +101,19 @@ Domain parse_domain(std::string_view text, const SourcePos& pos) {
     else if (c == ')') --depth;
     else if (c == ',' && depth == 0) {
       if (comma != std::string_view::npos)
-        throw InputError(pos_at(text, pos, k), "an interval has exactly two bounds; unexpected second ','");
+        throw InputError(position_in(text, pos, k), "an interval has exactly two bounds; unexpected second ','");
       comma = k;
     }
   }
   if (comma == std::string_view::npos)
-    throw InputError(pos_at(text, pos, e - 1), "expected ',' between the two bounds of the interval");
+    throw InputError(position_in(text, pos, e - 1), "expected ',' between the two bounds of the interval");
 
   auto bound = [&](std::size_t from, std::size_t to) -> GiNaC::ex {
     std::string_view s = text.substr(from, to - from);
     std::size_t k = 0;
     while (k < s.size() && is_space(s[k])) ++k;
-    if (k == s.size()) throw InputError(pos_at(text, pos, from), "missing interval bound");
-    Node n = parse_expression(s, pos_at(text, pos, from));
+    if (k == s.size()) throw InputError(position_in(text, pos, from), "missing interval bound");
+    Node n = parse_expression(s, position_in(text, pos, from));
     return constant_value(n);
   };
   GiNaC::ex lo = bound(open + 1, comma);
@@ -139,11 +125,11 @@ Domain parse_domain(std::string_view text, const SourcePos& pos) {
   // evaluation decides their order; equal bounds are detected exactly.
   GiNaC::ex diff = (hi - lo).evalf();
   if (!GiNaC::is_a<GiNaC::numeric>(diff) || !GiNaC::ex_to<GiNaC::numeric>(diff).is_real())
-    throw InputError(pos_at(text, pos, open), "interval bounds must be real constants",
+    throw InputError(position_in(text, pos, open), "interval bounds must be real constants",
                      static_cast<int>(e - open));
   bool equal = (hi - lo).expand().is_zero();
   if ((!equal && GiNaC::ex_to<GiNaC::numeric>(diff).is_negative()) || (equal && (lo_open || hi_open)))
-    throw InputError(pos_at(text, pos, open),
+    throw InputError(position_in(text, pos, open),
                      "the interval " + std::string(text.substr(open, e - open)) + " is empty",
                      static_cast<int>(e - open));
   return Domain::interval(lo, lo_open, hi, hi_open);

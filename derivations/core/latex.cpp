@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "derivations/core/rules.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace dc {
 namespace {

@@ -89,6 +89,12 @@ class Reader {
   void expect(std::string_view w) {
     if (!accept(w)) fail("expected '" + std::string(w) + "'");
   }
+  // White space, then the single character c ({ } ( ) _ ^), which is consumed.
+  void expect_char(char c, const std::string& what = {}) {
+    skip_ws();
+    if (peek() != c) fail(what.empty() ? std::string("expected '") + c + "'" : what);
+    ++i_;
+  }
 
   void skip_ws() {
     while (!at_end() && std::isspace(static_cast<unsigned char>(peek()))) ++i_;
@@ -125,18 +131,7 @@ class Reader {
     return std::string(s_.substr(start + 1, i_ - start - 2));
   }
 
-  SourcePos pos_at(std::size_t k) const {
-    SourcePos p = origin_;
-    for (std::size_t j = 0; j < k && j < s_.size(); ++j) {
-      if (s_[j] == '\n') {
-        ++p.line;
-        p.col = 1;
-      } else {
-        ++p.col;
-      }
-    }
-    return p;
-  }
+  SourcePos pos_at(std::size_t k) const { return position_in(s_, origin_, k); }
 
   [[noreturn]] void fail(const std::string& what) const {
     std::string near(s_.substr(i_, 24));
@@ -216,13 +211,9 @@ class Reader {
   }
 
   Node braced_expr() {
-    skip_ws();
-    if (peek() != '{') fail("expected '{'");
-    ++i_;
+    expect_char('{');
     Node n = expr();
-    skip_ws();
-    if (peek() != '}') fail("expected '}'");
-    ++i_;
+    expect_char('}');
     return n;
   }
 
@@ -357,17 +348,13 @@ class Reader {
     if (c == '{') {
       ++i_;
       Node n = expr();
-      skip_ws();
-      if (peek() != '}') fail("expected '}'");
-      ++i_;
+      expect_char('}');
       return n;
     }
     if (c == '(') {
       ++i_;
       Node n = expr();
-      skip_ws();
-      if (peek() != ')') fail("expected ')'");
-      ++i_;
+      expect_char(')');
       n.parenthesized = true;
       return n;
     }
@@ -395,9 +382,7 @@ class Reader {
       return call("sqrt", std::move(a));
     }
     if (accept("\\mathrm{e}")) {
-      skip_ws();
-      if (peek() != '^') fail("expected '^' after \\mathrm{e}");
-      ++i_;
+      expect_char('^', "expected '^' after \\mathrm{e}");
       std::vector<Node> a;
       a.push_back(braced_expr());
       return call("exp", std::move(a));
@@ -418,18 +403,12 @@ class Reader {
       return call(name, std::move(a));
     }
     if (accept("\\lim")) {
-      skip_ws();
-      if (peek() != '_') fail("expected '_' after \\lim");
-      ++i_;
-      skip_ws();
-      if (peek() != '{') fail("expected '{'");
-      ++i_;
+      expect_char('_', "expected '_' after \\lim");
+      expect_char('{');
       Node var = expr();
       expect("\\to");
       Node point = expr();
-      skip_ws();
-      if (peek() != '}') fail("expected '}'");
-      ++i_;
+      expect_char('}');
       Node body = factor();
       std::vector<Node> a;
       a.push_back(std::move(body));
@@ -438,13 +417,9 @@ class Reader {
       return call("limit", std::move(a));
     }
     if (accept("\\int")) {
-      skip_ws();
-      if (peek() != '_') fail("expected '_' after \\int");
-      ++i_;
+      expect_char('_', "expected '_' after \\int");
       Node lo = braced_expr();
-      skip_ws();
-      if (peek() != '^') fail("expected '^' after the lower limit");
-      ++i_;
+      expect_char('^', "expected '^' after the lower limit");
       Node hi = braced_expr();
       Node body = expr();
       expect("\\,");

@@ -52,6 +52,8 @@ int decl_index(const ex& s, const SymbolTable& ctx) {
   return INT_MAX;
 }
 
+}  // namespace
+
 void collect_symbols(const ex& e, GiNaC::exset& out) {
   if (GiNaC::is_a<GiNaC::symbol>(e)) {
     out.insert(e);
@@ -60,43 +62,7 @@ void collect_symbols(const ex& e, GiNaC::exset& out) {
   for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
 }
 
-double to_double_approx(const ex& e) {
-  DigitsGuard g(30);
-  ex v = e.evalf();
-  if (!GiNaC::is_a<numeric>(v)) return std::nan("");
-  const numeric& n = GiNaC::ex_to<numeric>(v);
-  if (!n.is_real()) return std::nan("");
-  return n.to_double();
-}
-
 numeric pow10(int k) { return GiNaC::pow(numeric(10), numeric(k)); }
-
-// An exact rational close to x (x != 0): random denominator so that sample points do not sit
-// on a regular grid; never an integer.
-numeric rational_near(double x, double resolution, Rng& rng) {
-  long long den0 = 1009 + static_cast<long long>(rng.below(98983));  // [1009, 99991]
-  int k = 0;
-  while (static_cast<double>(den0) * std::pow(10.0, k) * resolution < 1000.0 && k < 40) ++k;
-  double scale = static_cast<double>(den0) * std::pow(10.0, k);
-  double nx = x * scale;
-  numeric num;
-  if (std::fabs(nx) < 9e15) {
-    num = numeric(static_cast<long>(std::llround(nx)));
-  } else {
-    // beyond double's integer range: round via text of the scaled value (rare: huge bounds)
-    std::ostringstream os;
-    os.precision(0);
-    os << std::fixed << nx;
-    num = numeric(os.str().c_str());
-  }
-  numeric den = numeric(den0) * pow10(k);
-  if (num.is_zero()) num = 1;
-  numeric q = num / den;
-  if (q.is_integer()) q = (num + 1) / den;
-  return q;
-}
-
-}  // namespace
 
 Domain domain_of(const ex& s, const SymbolTable& ctx) {
   if (!GiNaC::is_a<GiNaC::symbol>(s)) return Domain::real();
@@ -117,151 +83,7 @@ std::vector<ex> ordered_symbols(const ex& e, const SymbolTable& ctx) {
   return out;
 }
 
-numeric sample_value(const Domain& d, Rng& rng, int tier) {
-  using K = Domain::Kind;
-  const bool wide = tier > 0;
-  if (d.kind != K::Interval) {
-    double decades = tier >= 2 ? 30.0 : tier == 1 ? 6.0 : 2.0;
-    double u = -decades + 2 * decades * rng.uniform();
-    double mag = std::pow(10.0, u);
-    int sign = 1;
-    if (d.kind == K::Real) sign = rng.below(2) ? -1 : 1;
-    if (d.kind == K::Negative) sign = -1;
-    return rational_near(sign * mag, mag, rng);
-  }
-  double lo = to_double_approx(d.lo), hi = to_double_approx(d.hi);
-  if (!(hi > lo)) {
-    // a single point [a, a]
-    if (GiNaC::is_a<numeric>(d.lo)) return GiNaC::ex_to<numeric>(d.lo);
-    return rational_near(lo, std::max(1e-12, std::fabs(lo) * 1e-12), rng);
-  }
-  double width = hi - lo;
-  for (int attempt = 0; attempt < 30; ++attempt) {
-    double t = tier == 2   ? 1e-9 * (1 + rng.uniform())
-               : tier >= 3 ? 1 - 1e-9 * (1 + rng.uniform())
-               : wide     ? 1e-6 + (1 - 2e-6) * rng.uniform()
-                          : 0.02 + 0.96 * rng.uniform();
-    double x = lo + t * width;
-    numeric q = rational_near(x, width * std::min(1e-2, std::min(t, 1 - t)), rng);
-    if (q == 1 || q == -1) continue;
-    if (d.contains(q)) return q;
-  }
-  // Degenerate tiny interval: the exact midpoint when both ends are rational.
-  if (GiNaC::is_a<numeric>(d.lo) && GiNaC::is_a<numeric>(d.hi))
-    return (GiNaC::ex_to<numeric>(d.lo) + GiNaC::ex_to<numeric>(d.hi)) / 2;
-  return rational_near(lo + width / 2, width * 1e-3, rng);
-}
-
-PointSampler::PointSampler(const std::vector<ex>& exprs, const SymbolTable& ctx) {
-  GiNaC::exset set;
-  for (const ex& e : exprs) collect_symbols(e, set);
-  const auto& all = ctx.constraints();
-  std::vector<bool> used(all.size(), false);
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (used[i]) continue;
-      GiNaC::exset cs;
-      collect_symbols(all[i].lhs - all[i].rhs, cs);
-      bool touches = false;
-      for (const ex& s : cs)
-        if (set.count(s)) touches = true;
-      if (touches) {
-        used[i] = true;
-        changed = true;
-        for (const ex& s : cs) set.insert(s);
-      }
-    }
-  }
-  GiNaC::lst l;
-  for (const ex& s : set) l.append(s);
-  syms_ = ordered_symbols(l, ctx);
-  for (const auto& s : syms_) doms_.push_back(domain_of(s, ctx));
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (used[i]) cons_.push_back(&all[i]);
-}
-
-namespace {
-
-// Move one symbol of the constraint c (linear in it, with the other symbols at their values in
-// p) just inside the constraint's boundary: value t + dir * |t| * 10^[-15, -1] (or an absolute
-// 10^[-30, -1] when t = 0). Claims that fail only in a thin slice the assumption leaves open
-// (x > 1 - 1e-9 with abs(x - 1) = x - 1) are found there.
-void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const std::vector<Domain>& doms,
-                      GiNaC::exmap& p, Rng& rng) {
-  ex d;
-  try {
-    d = (c.lhs - c.rhs).expand();
-  } catch (const std::exception&) {
-    return;
-  }
-  for (std::size_t i = 0; i < syms.size(); ++i) {
-    const GiNaC::symbol& sym = GiNaC::ex_to<GiNaC::symbol>(syms[i]);
-    if (!d.has(sym) || !d.is_polynomial(sym) || d.degree(sym) != 1) continue;
-    GiNaC::exmap others = p;
-    others.erase(syms[i]);
-    ex a, b;
-    try {
-      a = d.coeff(sym, 1).subs(others);
-      b = d.coeff(sym, 0).subs(others);
-    } catch (const std::exception&) {
-      continue;
-    }
-    if (!GiNaC::is_a<numeric>(a) || !GiNaC::is_a<numeric>(b)) continue;
-    const numeric& an = GiNaC::ex_to<numeric>(a);
-    if (an.is_zero() || !an.is_rational() || !GiNaC::ex_to<numeric>(b).is_rational()) continue;
-    numeric t = -GiNaC::ex_to<numeric>(b) / an;
-    // the side of the boundary where a*s + b has the constraint's sign
-    using Op = Constraint::Op;
-    int want = (c.op == Op::Gt || c.op == Op::Ge) ? 1 : (c.op == Op::Lt || c.op == Op::Le) ? -1 : (rng.below(2) ? 1 : -1);
-    int dir = an.is_positive() ? want : -want;
-    double e = t.is_zero() ? -30.0 + 29.0 * rng.uniform() : -15.0 + 14.0 * rng.uniform();
-    numeric off = rational_near(std::pow(10.0, e), std::pow(10.0, e) * 1e-3, rng);
-    if (!t.is_zero()) off *= GiNaC::abs(t);
-    numeric v = t + dir * off;
-    if (!doms[i].contains(v)) continue;
-    p[syms[i]] = v;
-    return;
-  }
-}
-
-}  // namespace
-
-GiNaC::exmap PointSampler::draw(Rng& rng, int tier, bool* admissible) const {
-  GiNaC::exmap p;
-  // tier 4: an ordinary point moved to the boundary of one of the assumptions
-  int base = tier == 4 ? 0 : tier;
-  for (std::size_t i = 0; i < syms_.size(); ++i) p[syms_[i]] = sample_value(doms_[i], rng, base);
-  if (tier == 4 && !cons_.empty()) move_to_boundary(*cons_[rng.below(cons_.size())], syms_, doms_, p, rng);
-  bool ok = true;
-  for (const Constraint* c : cons_)
-    if (!c->holds_at(p)) {
-      ok = false;
-      break;
-    }
-  if (admissible) *admissible = ok;
-  return p;
-}
-
-std::vector<std::pair<std::string, std::string>> PointSampler::describe(const GiNaC::exmap& p) const {
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& s : syms_) {
-    auto it = p.find(s);
-    if (it == p.end()) continue;
-    out.push_back({GiNaC::ex_to<GiNaC::symbol>(s).get_name(), exact_text(GiNaC::ex_to<numeric>(it->second))});
-  }
-  return out;
-}
-
-std::string join_point(const std::vector<std::pair<std::string, std::string>>& pt) {
-  std::string s;
-  for (std::size_t i = 0; i < pt.size(); ++i) {
-    if (i) s += ", ";
-    s += pt[i].first + " = " + pt[i].second;
-  }
-  return s;
-}
+// Sampling (sample_value, PointSampler): sampling.cpp.
 
 // ---------------------------------------------------------------- abstract functions
 

@@ -3,6 +3,7 @@
 // small deterministic printer. Not part of the public interface.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,14 +34,36 @@ std::uint64_t hash_text(const std::string& s, std::uint64_t seed);
 // and the copy no longer compares equal.)
 Domain domain_of(const GiNaC::ex& s, const SymbolTable& ctx);
 
+// The symbols of e (each once).
+void collect_symbols(const GiNaC::ex& e, GiNaC::exset& out);
 // Symbols of e in declaration order (then unknown symbols by name): deterministic, unlike
 // GiNaC's traversal order.
 std::vector<GiNaC::ex> ordered_symbols(const GiNaC::ex& e, const SymbolTable& ctx);
+
+// 10^k, exact.
+GiNaC::numeric pow10(int k);
+
+// --- sampling (sampling.cpp) ---------------------------------------------------------------
+
+// An exact rational close to x (x != 0) to about `resolution`: random denominator so that
+// sample points do not sit on a regular grid; never an integer.
+GiNaC::numeric rational_near(double x, double resolution, Rng& rng);
 
 // An exact rational drawn from the domain: real -> both signs, magnitude 10^[-2, 2] (tier 0),
 // 10^[-6, 6] (tier 1) or 10^[-30, 30] (tiers 2, 3), never 0, +-1 or an integer; intervals ->
 // interior points (tier 1 anywhere, tier 2 within 1e-9 of the lower end, tier 3 of the upper).
 GiNaC::numeric sample_value(const Domain& d, Rng& rng, int tier);
+
+// A constraint read as a bound on one of its symbols s, the other symbols at their values in p:
+// a*s + b OP 0 with a != 0 (a, b turned into exact rationals by `value`) is s OP' at, at = -b/a
+// (OP' is OP flipped when a < 0). nullopt when c is not linear in s or a, b are not numbers
+// there.
+struct LinearBound {
+  GiNaC::numeric at;
+  Constraint::Op op;
+};
+std::optional<LinearBound> linear_bound(const Constraint& c, const GiNaC::ex& s, const GiNaC::exmap& p,
+                                        const std::function<std::optional<GiNaC::numeric>(const GiNaC::ex&)>& value);
 
 // Sampling of admissible points for a set of expressions: the symbols they use plus every
 // symbol linked to them through a constraint, and the constraints that apply.
@@ -49,9 +72,12 @@ class PointSampler {
   PointSampler(const std::vector<GiNaC::ex>& exprs, const SymbolTable& ctx);
   const std::vector<GiNaC::ex>& symbols() const { return syms_; }
   const std::vector<const Constraint*>& constraints() const { return cons_; }
-  // A random point of magnitude tier 0-3 (sample_value), or tier 4: a tier-0 point with one
-  // symbol moved just inside the boundary of one assumption. `admissible` says whether every
-  // applicable constraint holds there.
+  // A random point of magnitude tier 0-3 (sample_value); tier 4: a tier-0 point with one
+  // symbol moved just inside the boundary of one assumption; tier 5: a point drawn inside the
+  // region the assumptions leave, symbol by symbol, each within the bounds the assumptions
+  // linear in it give once the others have values (near those bounds, between a bound and 0,
+  // or an ordinary distance inside; without assumptions, a tier-0 point). `admissible` says
+  // whether every applicable constraint holds there.
   GiNaC::exmap draw(Rng& rng, int tier, bool* admissible) const;
   // "m1 = 7/3, m2 = 5/2" in declaration order, and the same as pairs.
   std::vector<std::pair<std::string, std::string>> describe(const GiNaC::exmap& p) const;

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "derivations/core/derivation.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace dc {
 

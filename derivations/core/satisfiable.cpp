@@ -23,15 +23,8 @@ using Op = Constraint::Op;
 constexpr int kTries = 2000;
 constexpr int kMaxExponent = 300;   // magnitudes 1e-300 .. 1e300
 
-numeric pow10(int k) { return GiNaC::pow(numeric(10), numeric(k)); }
-
-void collect_symbols(const ex& e, GiNaC::exset& out) {
-  if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    out.insert(e);
-    return;
-  }
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_symbols(e.op(i), out);
-}
+using detail::collect_symbols;
+using detail::pow10;
 
 bool has_symbol_or_application(const ex& e) {
   if (GiNaC::is_a<GiNaC::symbol>(e) || detail::is_abstract_application(e)) return true;
@@ -41,28 +34,6 @@ bool has_symbol_or_application(const ex& e) {
 }
 
 std::string quoted(const Constraint& c) { return "'" + c.text + "'"; }
-
-Op flipped(Op op) {
-  switch (op) {
-    case Op::Lt: return Op::Gt;
-    case Op::Le: return Op::Ge;
-    case Op::Gt: return Op::Lt;
-    case Op::Ge: return Op::Le;
-    case Op::Ne: return Op::Ne;
-  }
-  return op;
-}
-
-bool relation_holds(int sign, Op op) {
-  switch (op) {
-    case Op::Lt: return sign < 0;
-    case Op::Le: return sign <= 0;
-    case Op::Gt: return sign > 0;
-    case Op::Ge: return sign >= 0;
-    case Op::Ne: return sign != 0;
-  }
-  return false;
-}
 
 // Float evaluation of a constant is trusted only when no exp or trigonometric function has an
 // argument too large for the working precision (GiNaC/CLN return 1.0 for exp(1e300) and 0.0
@@ -337,7 +308,7 @@ bool holds_surely(const Constraint& c, const GiNaC::exmap& p) {
   if (GiNaC::is_a<numeric>(d)) {
     const numeric& n = GiNaC::ex_to<numeric>(d);
     if (!n.is_real()) return false;
-    if (n.is_rational()) return relation_holds(n.is_zero() ? 0 : (n.is_positive() ? 1 : -1), c.op);
+    if (n.is_rational()) return sign_satisfies(c.op, n.is_zero() ? 0 : (n.is_positive() ? 1 : -1));
   }
   if (!evaluation_trustworthy(d, 60)) return false;
   numeric v[2];
@@ -356,7 +327,7 @@ bool holds_surely(const Constraint& c, const GiNaC::exmap& p) {
   }
   if (v[1].is_zero() || GiNaC::abs(v[0] - v[1]) > GiNaC::abs(v[1]) * pow10(-20)) return false;
   if (v[0].is_positive() != v[1].is_positive()) return false;
-  return relation_holds(v[1].is_positive() ? 1 : -1, c.op);
+  return sign_satisfies(c.op, v[1].is_positive() ? 1 : -1);
 }
 
 // A random exact rational m * 10^e with 1 <= |m| < 10 not an integer (so powers with sampled
@@ -487,34 +458,17 @@ class Search {
   }
 
   bool move_beyond(const Constraint& c, GiNaC::exmap& p) {
-    ex d;
-    try {
-      d = (c.lhs - c.rhs).expand();
-    } catch (const std::exception&) {
-      return false;
-    }
-    // candidates: symbols in which d is linear, a symbol alone on one side first
+    // candidates: symbols in which c is linear, a symbol alone on one side first
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < syms_.size(); ++i)
       if (c.lhs.is_equal(syms_[i]) || c.rhs.is_equal(syms_[i])) order.push_back(i);
     for (std::size_t i = 0; i < syms_.size(); ++i)
-      if (std::find(order.begin(), order.end(), i) == order.end() && d.has(syms_[i])) order.push_back(i);
+      if (std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
     for (std::size_t i : order) {
-      const GiNaC::symbol& s = GiNaC::ex_to<GiNaC::symbol>(syms_[i]);
-      if (!d.is_polynomial(s) || d.degree(s) != 1) continue;
-      GiNaC::exmap others = p;
-      others.erase(syms_[i]);
-      ex a, b;
-      try {
-        a = d.coeff(s, 1).subs(others);
-        b = d.coeff(s, 0).subs(others);
-      } catch (const std::exception&) {
-        continue;
-      }
-      auto av = numeric_value(a), bv = numeric_value(b);
-      if (!av || !bv || av->is_zero()) continue;
-      numeric t = -*bv / *av;
-      Op op = av->is_positive() ? c.op : flipped(c.op);
+      auto bound = detail::linear_bound(c, syms_[i], p, numeric_value);
+      if (!bound) continue;
+      const numeric& t = bound->at;
+      const Op op = bound->op;
       // direction: +1 above the boundary, -1 below
       int dir = 0;
       if (op == Op::Gt || op == Op::Ge) dir = 1;
@@ -549,7 +503,7 @@ ConstantTruth constant_truth(const Constraint& c) {
   ConstSign s = constant_sign(d);
   if (!s.decided) return ConstantTruth::Undecidable;
   if (s.not_real) return ConstantTruth::False;
-  return relation_holds(s.sign, c.op) ? ConstantTruth::True : ConstantTruth::False;
+  return sign_satisfies(c.op, s.sign) ? ConstantTruth::True : ConstantTruth::False;
 }
 
 void require_possible_assumption(const Constraint& c, int length) {

@@ -12,6 +12,19 @@ std::string where(const SourcePos& p) {
 }
 }  // namespace
 
+SourcePos position_in(std::string_view text, const SourcePos& origin, std::size_t offset) {
+  SourcePos p = origin;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++p.line;
+      p.col = 1;
+    } else {
+      ++p.col;
+    }
+  }
+  return p;
+}
+
 std::string SourceText::line(int line_no) const {
   if (line_no < 1) return {};
   std::size_t start = 0;

@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace dc {
@@ -20,6 +21,9 @@ struct SourcePos {
   int line = 0;
   int col = 0;
 };
+
+// The position of text[offset] when text[0] is at `origin` (a newline starts the next line).
+SourcePos position_in(std::string_view text, const SourcePos& origin, std::size_t offset);
 
 // The text of an input, kept so errors can quote the offending line.
 struct SourceText {

@@ -242,14 +242,31 @@ bool Constraint::holds_at(const GiNaC::exmap& point) const {
   else if (b.negative()) s = -1;
   else if (b.exact_zero()) s = 0;
   else return false;
+  return sign_satisfies(op, s);
+}
+
+bool sign_satisfies(Constraint::Op op, int sign) {
+  using Op = Constraint::Op;
   switch (op) {
-    case Op::Lt: return s < 0;
-    case Op::Le: return s <= 0;
-    case Op::Gt: return s > 0;
-    case Op::Ge: return s >= 0;
-    case Op::Ne: return s != 0;
+    case Op::Lt: return sign < 0;
+    case Op::Le: return sign <= 0;
+    case Op::Gt: return sign > 0;
+    case Op::Ge: return sign >= 0;
+    case Op::Ne: return sign != 0;
   }
   return false;
+}
+
+Constraint::Op flipped(Constraint::Op op) {
+  using Op = Constraint::Op;
+  switch (op) {
+    case Op::Lt: return Op::Gt;
+    case Op::Le: return Op::Ge;
+    case Op::Gt: return Op::Lt;
+    case Op::Ge: return Op::Le;
+    case Op::Ne: return Op::Ne;
+  }
+  return op;
 }
 
 }  // namespace dc

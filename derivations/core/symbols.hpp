@@ -64,6 +64,11 @@ struct Constraint {
   bool holds_at(const GiNaC::exmap& point) const;   // exact/numeric evaluation at a point
 };
 
+// Does a difference lhs - rhs of sign `sign` (-1, 0 or 1) satisfy `op`?
+bool sign_satisfies(Constraint::Op op, int sign);
+// The same relation with its sides exchanged: a < b is b > a.
+Constraint::Op flipped(Constraint::Op op);
+
 class SymbolTable {
  public:
   // Throws InputError on redeclaration or an empty domain.

@@ -32,9 +32,12 @@ CompareOptions compare_options(const ProveOptions& opt) {
   return co;
 }
 
-bool certified_counterexample(const PointComparison& c) {
-  using K = PointComparison::Kind;
-  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
+// An agreement is confirmed once at four times the digits: a false claim whose difference
+// lies below the tolerance (cos(10^-40*x) = 1 differs by ~1e-80) separates there.
+CompareOptions confirmation(const CompareOptions& co) {
+  CompareOptions co4 = co;
+  co4.start_digits = 4 * std::max<long>(co.start_digits, -co.tol_exponent + 15);
+  return co4;
 }
 
 // "lhs = 1.5, rhs = 2.25" / "lhs = 0.4 is real, rhs is not real (log of a negative number)"
@@ -53,14 +56,22 @@ void set_refuted(Verdict& v, const PointComparison& c) {
   v.max_rel_diff = c.rel_diff;
 }
 
-// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2] (one of them moved
-// next to the boundary of an assumption when there is one), two in
+// Magnitude tier of the k-th draw: of every ten points six lie in 10^[-2, 2] (with assumptions,
+// two of them drawn inside the region the assumptions leave, symbol by symbol, and one moved
+// next to the boundary of an assumption), two in
 // 10^[-6, 6] and two in 10^[-30, 30] (for interval domains: within 1e-9 of the lower and of
 // the upper end), so large and tiny values and the ends of the declared domain are tested too
-// (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found).
-int tier_of(int attempt, bool failing) {
-  if (failing) return 1 + attempt % 3;
+// (a claim that fails only for x > 10^6, or only beyond pi in [0, 355/113], is found; so is one
+// that fails only where a chain of assumptions x > y > -1 lets x be negative).
+// `failing`: most points so far were unusable (every fourth is then drawn inside the region
+// the assumptions leave).
+constexpr int kBoundarySweep = 10;   // extra points for claims with assumptions (see probe)
+
+int tier_of(int attempt, bool failing, bool assumptions) {
+  if (failing) return assumptions && attempt % 4 == 3 ? 5 : 1 + attempt % 3;
   switch (attempt % 10) {
+    case 1:
+    case 3: return assumptions ? 5 : 0;   // inside the region the assumptions leave
     case 5: return 4;   // next to the boundary of an assumption (an ordinary point without one)
     case 6:
     case 7: return 1;
@@ -122,10 +133,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
   std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
 
-  // An agreement is confirmed once at four times the digits: a false claim whose difference
-  // lies below the tolerance (cos(10^-40*x) = 1 differs by ~1e-80) separates there.
-  CompareOptions co4 = co;
-  co4.start_digits = 4 * std::max<long>(co.start_digits, -co.tol_exponent + 15);
+  const CompareOptions co4 = confirmation(co);
   if (sampler.symbols().empty() && !abstract) {
     PointComparison c = compare_constants(lhs, rhs, co);
     if (c.kind == K::Agree) {
@@ -167,13 +175,14 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   std::string unknown_why;
   double max_rel = 0;
   long max_digits = 0;
-  for (; attempts < max_attempts && agreed < need; ++attempts) {
-    int tier = tier_of(attempts, attempts >= need * 10);
+  // One point drawn at `tier` and compared. A certified difference refutes (v is set, true is
+  // returned); an agreement and the reasons a point is unusable are counted when `counting`.
+  auto try_point = [&](int tier, bool counting) {
     bool admissible = false;
     GiNaC::exmap p = sampler.draw(rng, tier, &admissible);
     if (!admissible) {
-      ++excluded;
-      continue;
+      if (counting) ++excluded;
+      return false;
     }
     std::uint64_t fseed = fn_seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(attempts + 1);
     PointComparison c;
@@ -182,8 +191,8 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       // abstract applications get their random values from their (substituted) arguments
       s = substitute_point(lhs, rhs, p, abstract, fseed);
       if (!s.ok) {
-        ++undefined;
-        continue;
+        if (counting) ++undefined;
+        return false;
       }
     }
     auto compare = [&](const CompareOptions& o) {
@@ -194,24 +203,21 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       PointComparison c4 = compare(co4);
       if (certified_counterexample(c4)) c = c4;
     }
-    if (c.kind == K::Agree) {
-      ++agreed;
-      max_rel = std::max(max_rel, c.rel_diff);
-      max_digits = std::max(max_digits, c.digits);
-      continue;
-    }
-    if (c.kind == K::NeitherReal) {
-      ++neither_real;
-      continue;
-    }
-    if (c.kind == K::IsolatedPole) {
-      ++undefined;
-      continue;
-    }
-    if (c.kind == K::Unknown) {
-      ++unknown;
-      if (unknown_why.empty()) unknown_why = c.why;
-      continue;
+    if (!certified_counterexample(c)) {
+      if (!counting) return false;
+      if (c.kind == K::Agree) {
+        ++agreed;
+        max_rel = std::max(max_rel, c.rel_diff);
+        max_digits = std::max(max_digits, c.digits);
+      } else if (c.kind == K::NeitherReal) {
+        ++neither_real;
+      } else if (c.kind == K::IsolatedPole) {
+        ++undefined;
+      } else {
+        ++unknown;
+        if (unknown_why.empty()) unknown_why = c.why;
+      }
+      return false;
     }
     set_refuted(v, c);
     v.points = agreed;
@@ -220,8 +226,17 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     v.detail = "differs at " + where + ": " + difference_text(c) + " (certified by ball arithmetic at " +
                std::to_string(c.digits) + " digits)";
     if (abstract) v.detail += " (abstract function values drawn at random)";
-    return v;
-  }
+    return true;
+  };
+  for (; attempts < max_attempts && agreed < need; ++attempts)
+    if (try_point(tier_of(attempts, attempts >= need * 10, !sampler.constraints().empty()), true)) return v;
+  // With assumptions, ten more points, alternately next to the boundary of an assumption and
+  // inside the region the assumptions leave, which can only refute: a claim false in a thin
+  // slice the assumptions leave open (abs(x - 1) = x - 1 with x > 1 - 1e-9) is met far more
+  // often, while the points an acceptance rests on are drawn as before.
+  if (agreed >= need && !sampler.constraints().empty())
+    for (int k = 0; k < kBoundarySweep; ++k, ++attempts)
+      if (try_point(k % 2 == 0 ? 4 : 5, false)) return v;
   if (agreed >= need) {
     v.kind = VerdictKind::HoldsNumerically;
     v.points = agreed;
@@ -260,6 +275,21 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   v.reason = why.str();
   v.detail = v.reason;
   return v;
+}
+
+bool certified_counterexample(const PointComparison& c) {
+  using K = PointComparison::Kind;
+  return c.kind == K::Differ || c.kind == K::LhsOnly || c.kind == K::RhsOnly;
+}
+
+PointComparison compare_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& point, const ProveOptions& opt) {
+  const CompareOptions co = compare_options(opt);
+  PointComparison c = compare_at(lhs, rhs, &point, co);
+  if (c.kind == PointComparison::Kind::Agree) {
+    PointComparison c4 = compare_at(lhs, rhs, &point, confirmation(co));
+    if (certified_counterexample(c4)) c = c4;
+  }
+  return c;
 }
 
 // A symbolic proof is re-witnessed at one admissible point: if the balls there certify a

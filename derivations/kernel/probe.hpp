@@ -15,6 +15,7 @@
 #include <ginac/ginac.h>
 
 #include "derivations/core/prove.hpp"
+#include "derivations/kernel/ball.hpp"
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/verdict.hpp"
 
@@ -24,6 +25,14 @@ namespace dc::kernel {
 // residual reported with an undecided verdict.
 Verdict probe(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
               const std::string& residual);
+
+// The probe's comparison at one given point (values read from `point` during the evaluation,
+// never substituted): the precision raised until the balls decide, an agreement confirmed at
+// four times the digits. For points a rule builds itself (a counterexample extended by the
+// quantities the references determine).
+PointComparison compare_point(const GiNaC::ex& lhs, const GiNaC::ex& rhs, const GiNaC::exmap& point,
+                              const ProveOptions& opt);
+bool certified_counterexample(const PointComparison& c);   // Differ, LhsOnly or RhsOnly
 
 // A symbolic proof is re-witnessed at an admissible point: the description of a certified
 // disagreement there ("at x = 3/7: lhs = ..., rhs = ..."), or "" when the witness agrees or

@@ -98,14 +98,11 @@ TEST_CASE("the adversarial corpus is well formed: >= 120 claims, every class wit
 
 namespace {
 
-// Known gaps, each a false claim still accepted. Listed by id so that the test fails on any
-// other false accept, and on a listed one that no longer is accepted (then remove it here).
-//  - bad_choose_root: a nonlinear `solve` substitutes the claimed root back and says that other
-//    roots are not excluded; y = w from y^2 = w^2 (y real) is accepted with that note.
-//  - as_chain_allows_negative: abs(x) = x with x > y, y > -1 fails only where -1 < y < x < 0;
-//    the one boundary point per ten draws lands there with probability ~1/4, so the verdict
-//    depends on the draws (refuted in some runs of this binary, accepted in the CLI).
-const std::set<std::string> kKnownGaps = {"bad_choose_root", "as_chain_allows_negative"};
+// Known gaps, each a false claim still accepted, listed by id so that the test fails on any
+// other false accept. None at present (bad_choose_root and as_chain_allows_negative were fixed:
+// derivations/rules/solve_roots.cpp, and the probe's draws inside the region the assumptions
+// leave).
+const std::set<std::string> kKnownGaps = {};
 
 }  // namespace
 

@@ -1,0 +1,178 @@
+// check_step and check_derivation (check.hpp): around the rule (dispatch.cpp), each step is
+// also checked for dimensions, side conditions of its claim, an erratum's printed claim and a
+// stable form's equality with the form it replaces.
+#include "derivations/rules/check.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+
+#include "derivations/rules/context.hpp"
+#include "derivations/rules/dispatch.hpp"
+
+namespace dc {
+
+namespace {
+
+using rules::positioned;
+using rules::with_line;
+
+// Dimension of every side; a mismatch is an error at the claim with both dimensions.
+void check_dimensions(const Derivation& d, const Relation& claim, StepResult& res) {
+  std::vector<Dimension> dims;
+  std::vector<const Node*> nodes;
+  for (const auto& side : claim.sides) {
+    // A literal 0 has every dimension (`m_p*v_p - m_c*v_c = 0`).
+    const Node* z = &side;
+    while (z->kind == NodeKind::Neg) z = &z->args[0];
+    if (z->kind == NodeKind::Number && z->text.find_first_not_of("0.") == std::string::npos) continue;
+    nodes.push_back(&side);
+    try {
+      dims.push_back(dimension_of(side, d.symbols));
+    } catch (const InputError& e) {
+      res.errors.push_back(with_line(d, e));
+      return;
+    }
+  }
+  if (dims.empty()) return;
+  for (std::size_t i = 1; i < dims.size(); ++i) {
+    if (dims[i] != dims[0]) {
+      const Node& n = *nodes[i];
+      res.errors.push_back(positioned(
+          d, n.pos,
+          "dimension mismatch: '" + to_text(*nodes[0]) + "' has dimension " + dims[0].to_string() + " but '" +
+              to_text(n) + "' has dimension " + dims[i].to_string(),
+          n.length));
+      return;
+    }
+  }
+  res.dimension = dims[0].to_string();
+}
+
+// The printed claim of an erratum step: an undefined symbol is reported at its position; a
+// well-formed but wrong printed claim is reported with its refutation.
+void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, StepResult& res) {
+  if (auto err = erratum_error(d, s)) {
+    res.errors.push_back(*err);
+    res.erratum_reported = true;
+    return;
+  }
+  StepResult printed;
+  printed.step = &s;
+  Verdict pv = rules::run_rule(d, s, s.claim, opt, printed);
+  if (pv.kind == VerdictKind::Refuted || !printed.errors.empty()) {
+    std::string why = !printed.errors.empty() ? printed.errors[0].message()
+                                              : "refuted" + (pv.detail.empty() ? std::string() : " (" + pv.detail + ")");
+    res.errors.push_back(positioned(d, s.claim_pos, "the printed claim is wrong: " + why + "; erratum: " + s.erratum->why,
+                                    static_cast<int>(std::max<std::size_t>(1, s.claim_text.size()))));
+    res.erratum_reported = true;
+  } else {
+    res.errors.push_back(positioned(d, s.erratum->pos,
+                                    "an erratum is declared but the printed claim is not refuted (" +
+                                        std::string(to_string(pv.kind)) + "); remove the erratum or fix the claim",
+                                    7));
+  }
+}
+
+// Side conditions of the claim's sides (an integral's own variable and bounds excluded).
+void add_claim_side_conditions(const Derivation& d, const Relation& claim, StepResult& res) {
+  try {
+    for (const auto& side : claim.sides) {
+      Node n = resolve_definitions(d, side);
+      std::function<void(const Node&)> walk = [&](const Node& m) {
+        if (m.kind == NodeKind::Call && m.text == "integral") {
+          for (const auto& a : m.args) walk(a);
+          return;
+        }
+        for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
+          bool dup = false;
+          for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
+          if (!dup) res.verdict.side_conditions.push_back(sc);
+        }
+      };
+      bool has_integral = false;
+      std::function<void(const Node&)> find = [&](const Node& m) {
+        if (m.kind == NodeKind::Call && m.text == "integral") has_integral = true;
+        for (const auto& a : m.args) find(a);
+      };
+      find(n);
+      if (has_integral) {
+        for (const auto& a : n.args) walk(a);
+        if (n.kind == NodeKind::Call && n.text == "integral") continue;
+      } else {
+        walk(n);
+      }
+    }
+  } catch (const std::exception&) {
+    // conversion problems were reported by the rule already
+  }
+}
+
+// A stable form must equal the form it replaces.
+void check_stable_form(const Derivation& d, const Step& s, const ProveOptions& opt, StepResult& res) {
+  const Step* other = d.find(*s.stable_of);
+  try {
+    auto a = claim_sides(d, s);
+    auto b = claim_sides(d, *other);
+    Verdict v = prove_equal(a.back(), b.back(), d.symbols, opt);
+    if (!v.holds())
+      res.errors.push_back(positioned(d, s.pos,
+                                      "the stable form is not equal to '" + *s.stable_of + "' (" +
+                                          std::string(to_string(v.kind)) + (v.detail.empty() ? "" : ": " + v.detail) + ")",
+                                      static_cast<int>(s.label.size())));
+  } catch (const std::exception& e) {
+    res.errors.push_back(positioned(d, s.pos, "the stable form cannot be compared with '" + *s.stable_of + "'",
+                                    static_cast<int>(s.label.size())));
+  }
+}
+
+}  // namespace
+
+StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt) {
+  auto t0 = std::chrono::steady_clock::now();
+  StepResult res;
+  res.step = &s;
+  const Relation& claim = s.erratum ? s.erratum->corrected : s.claim;
+  if (s.erratum) check_erratum(d, s, opt, res);
+  check_dimensions(d, claim, res);
+  res.verdict = rules::run_rule(d, s, claim, opt, res);
+  add_claim_side_conditions(d, claim, res);
+  // A claim must hold on the whole declared domain (premises only warn).
+  if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
+  if (s.stable_of) check_stable_form(d, s, opt, res);
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+int CheckSummary::exit_code(bool strict) const {
+  if (input_errors > 0) return 2;
+  if (refuted > 0 || errors > 0) return 1;
+  if (undecided > 0) return 3;
+  if (strict && errata > 0) return 1;
+  return 0;
+}
+
+void CheckSummary::add(StepResult r) {
+  const Step& s = *r.step;
+  std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
+  if (r.erratum_reported) ++errata;
+  r.premise = s.rule.name == "given" || s.rule.name == "definition";
+  if (r.input_error) ++input_errors;
+  if (own_errors > 0) ++errors;
+  else if (r.premise && r.verdict.holds()) ++premises;
+  else switch (r.verdict.kind) {
+      case VerdictKind::Proved: ++proved; break;
+      case VerdictKind::HoldsNumerically: ++holds_numerically; break;
+      case VerdictKind::Refuted: ++refuted; break;
+      case VerdictKind::Undecided: ++undecided; break;
+    }
+  results.push_back(std::move(r));
+}
+
+CheckSummary check_derivation(const Derivation& d, const ProveOptions& opt) {
+  CheckSummary sum;
+  for (const auto& s : d.steps) sum.add(check_step(d, s, opt));
+  return sum;
+}
+
+}  // namespace dc

@@ -1,0 +1,239 @@
+// The step context and the helpers every rule uses (context.hpp).
+#include "derivations/rules/context.hpp"
+
+#include <algorithm>
+
+#include "derivations/core/functions.hpp"
+#include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
+
+namespace dc::rules {
+
+InputError positioned(const Derivation& d, const SourcePos& p, const std::string& msg, int len) {
+  return InputError(p, msg, len, d.source.line(p.line));
+}
+
+InputError with_line(const Derivation& d, const InputError& e) {
+  if (!e.line_text().empty() || e.pos().line < 1) return e;
+  return e.with_line_text(d.source.line(e.pos().line));
+}
+
+// --- verdicts -------------------------------------------------------------------------
+
+namespace {
+int severity(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved: return 0;
+    case VerdictKind::HoldsNumerically: return 1;
+    case VerdictKind::Undecided: return 2;
+    case VerdictKind::Refuted: return 3;
+  }
+  return 2;
+}
+}  // namespace
+
+namespace {
+Verdict verdict(VerdictKind kind, const std::string& method) {
+  Verdict v;
+  v.kind = kind;
+  v.method = method;
+  return v;
+}
+}  // namespace
+
+Verdict undecided(const std::string& method, const std::string& reason) {
+  Verdict v = verdict(VerdictKind::Undecided, method);
+  v.reason = reason;
+  return v;
+}
+
+Verdict proved(const std::string& method, const std::string& detail) {
+  Verdict v = verdict(VerdictKind::Proved, method);
+  v.detail = detail;
+  return v;
+}
+
+std::string prefix_method(const std::string& rule_method, const std::string& prove_method) {
+  return prove_method.empty() ? rule_method : rule_method + " + " + prove_method;
+}
+
+void Combiner::add(Verdict v, const std::string& what, bool silent) {
+  if (!(silent && v.holds()) && std::find(methods.begin(), methods.end(), v.method) == methods.end())
+    methods.push_back(v.method);
+  if (!what.empty() && v.kind != VerdictKind::Proved) v.detail = what + (v.detail.empty() ? "" : ": " + v.detail);
+  if (!any || severity(v.kind) > severity(worst.kind)) worst = std::move(v);
+  any = true;
+}
+
+Verdict Combiner::result() const {
+  if (!any) return undecided("none", "nothing to check");
+  Verdict v = worst;
+  if (v.kind == VerdictKind::Proved && !methods.empty()) {
+    std::string m;
+    for (std::size_t i = 0; i < methods.size(); ++i) m += (i ? ", " : "") + methods[i];
+    v.method = m;
+  }
+  return v;
+}
+
+// --- expressions ----------------------------------------------------------------------
+
+ex Atomizer::operator()(const ex& e) {
+  if (pool_function_index(e) >= 0) {
+    auto it = fwd.find(e);
+    if (it != fwd.end()) return it->second;
+    GiNaC::realsymbol s("dc_atom" + std::to_string(n++));
+    fwd[e] = s;
+    back[s] = e;
+    return s;
+  }
+  return e.map(*this);
+}
+
+bool free_of_unknowns(const ex& e) {
+  if (GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0) return false;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (!free_of_unknowns(e.op(i))) return false;
+  return true;
+}
+
+bool has_any(const ex& e, const std::vector<ex>& syms) {
+  for (const auto& s : syms)
+    if (e.has(s)) return true;
+  return false;
+}
+
+// --- the step -------------------------------------------------------------------------
+
+void StepContext::fail(const SourcePos& p, const std::string& msg, int len) const {
+  throw StepError{positioned(d, p, msg, len)};
+}
+
+std::string StepContext::text(const ex& e) const { return print_text(e, d.symbols); }
+
+ex StepContext::conv(const Node& n) const { return resolved_ginac(d, n); }
+
+std::vector<ex> StepContext::sides(const Relation& r) const {
+  std::vector<ex> out;
+  for (const auto& n : r.sides) out.push_back(conv(n));
+  return out;
+}
+
+ex StepContext::symbol_of(const RuleArg& a) const {
+  ex v = conv(a.value);
+  if (!GiNaC::is_a<GiNaC::symbol>(v)) fail(a.pos, "expected a symbol", a.length);
+  return v;
+}
+
+const Step& StepContext::ref_step(const RuleArg& a) const {
+  const Step* st = d.find(a.label);
+  if (!st) fail(a.pos, "unknown label '" + a.label + "'", a.length);
+  return *st;
+}
+
+const Relation& claim_of(const Step& st) { return st.erratum ? st.erratum->corrected : st.claim; }
+
+std::vector<Eq> StepContext::equations(const RuleArg& a) const {
+  const Relation* r;
+  std::string from;
+  if (a.kind == RuleArg::Kind::Label) {
+    const Step& st = ref_step(a);
+    r = &claim_of(st);
+    from = st.label;
+  } else if (a.kind == RuleArg::Kind::Equation) {
+    r = &a.equation;
+    from = a.label;
+  } else {
+    fail(a.pos, "expected a label or an equation 'x = value'", a.length);
+  }
+  if (r->sides.size() < 2)
+    fail(a.pos, "'" + from + "' is an expression, not an equation; a rule can only use equations", a.length);
+  std::vector<Eq> out;
+  std::vector<ex> sd;
+  try {
+    sd = sides(*r);
+  } catch (const InputError& e) {
+    fail(a.pos, "'" + from + "' cannot be used here: " + e.message(), a.length);
+  }
+  for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+    Eq q{sd[i] - sd[i + 1], ex(), from};
+    if (i == 0 && r->sides[0].kind == NodeKind::Symbol) q.hint = sd[0];
+    if (i == 0 && r->sides[0].kind == NodeKind::Call && pool_function_index(sd[0]) >= 0) q.hint = sd[0];
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+std::vector<Eq> StepContext::all_equations(const std::vector<RuleArg>& args) const {
+  std::vector<Eq> out;
+  for (const auto& a : args) {
+    auto e = equations(a);
+    out.insert(out.end(), e.begin(), e.end());
+  }
+  return out;
+}
+
+Substitutions StepContext::substitutions(const std::vector<RuleArg>& args, std::vector<Eq>* rest,
+                                         std::vector<std::string>* labels) const {
+  Substitutions out;
+  for (const auto& a : args) {
+    std::size_t n = out.size();
+    const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
+    if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
+    ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
+    // a symbol, an abstract function value v(0), or an application such as sin(theta)
+    auto substitutable = [](const ex& e) {
+      return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e) || pool_function_index(e) >= 0;
+    };
+    if (substitutable(lhs) && !rhs.has(lhs)) out.push_back({lhs, rhs});
+    else if (substitutable(rhs) && !lhs.has(rhs)) out.push_back({rhs, lhs});
+    else if (rest) rest->push_back({lhs - rhs, ex(), a.label});
+    else fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
+    if (labels && out.size() > n) labels->push_back(a.label);
+  }
+  return out;
+}
+
+std::vector<ex> StepContext::symbols_in(const std::vector<ex>& es) const {
+  GiNaC::lst all;
+  for (const auto& e : es) all.append(e);
+  return detail::ordered_symbols(all, d.symbols);
+}
+
+int StepContext::declaration_index(const ex& s) const {
+  int i = 0;
+  for (const auto& info : d.symbols.all()) {
+    if (info.sym.is_equal(s)) return i;
+    ++i;
+  }
+  return -1;
+}
+
+bool StepContext::real_domain(const ex& s) const {
+  for (const auto& info : d.symbols.all())
+    if (info.sym.is_equal(s)) return info.domain.kind == Domain::Kind::Real;
+  return true;  // atoms (abstract functions) are unrestricted
+}
+
+ex apply_subs(ex e, const Substitutions& subs, std::vector<bool>* used) {
+  if (used) used->resize(subs.size(), false);
+  for (int round = 0; round < 16; ++round) {
+    ex before = e;
+    for (std::size_t i = 0; i < subs.size(); ++i) {
+      ex next = e.subs(subs[i].first == subs[i].second, GiNaC::subs_options::no_pattern);
+      if (used && !next.is_equal(e)) (*used)[i] = true;
+      e = next;
+    }
+    if (e.is_equal(before)) break;   // structural: only to detect a fixed point
+  }
+  return e;
+}
+
+void apply_to(Eq& q, const Substitutions& subs, const std::vector<std::string>& labels) {
+  std::vector<bool> used;
+  q.e = apply_subs(q.e, subs, &used);
+  for (std::size_t i = 0; i < used.size(); ++i)
+    if (used[i]) q.also.push_back(labels[i]);
+}
+
+}  // namespace dc::rules

@@ -1,0 +1,40 @@
+// `by differentiate A, ... wrt t`: the claim follows from the references and their derivatives
+// in t. Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may
+// be differentiated; an equation between plain symbols (y = F0*t, y a symbol) is one value,
+// and differentiating it would "derive" 0 = F0. Such equations are used as they are.
+#include "derivations/rules/dispatch.hpp"
+#include "derivations/rules/follows.hpp"
+
+namespace dc::rules {
+
+Verdict differentiate(StepContext& c, const Relation& claim) {
+  const RuleSpec& rule = c.rule();
+  ex t = c.symbol_of(*rule.var);
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  std::vector<Eq> eqs, originals;
+  for (const auto& a : rule.refs)
+    for (auto& q : c.equations(a)) {
+      originals.push_back(q);
+      if (has_application_at(q.e, t)) eqs.push_back({q.e.diff(ts), ex(), q.from});
+    }
+  if (eqs.empty()) {
+    const RuleArg& a = rule.refs[0];
+    c.fail(a.pos, "'" + a.label + "' contains no function of " + c.text(t) +
+                      ": a plain symbol is one value and cannot be differentiated (declare the quantities that vary "
+                      "with " + c.text(t) + " as functions of " + c.text(t) + ")",
+           a.length);
+  }
+  // the derivative of the first equation, as derived
+  std::string derived;
+  {
+    std::vector<ex> as = c.sides(claim_of(c.ref_step(rule.refs[0])));
+    if (as.size() >= 2) derived = c.text(as[0].diff(ts)) + " = " + c.text(as[1].diff(ts));
+  }
+  c.res.derived = derived;
+  eqs.insert(eqs.end(), originals.begin(), originals.end());
+  std::vector<ex> sd = c.sides(claim);
+  if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by differentiate' must be an equation");
+  return links_follow(c, sd, eqs, "differentiate");
+}
+
+}  // namespace dc::rules

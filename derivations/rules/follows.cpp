@@ -1,0 +1,175 @@
+// Does the claim follow from the references? (follows.hpp)
+#include "derivations/rules/follows.hpp"
+
+#include <algorithm>
+#include <functional>
+
+#include "derivations/core/functions.hpp"
+#include "derivations/rules/counterexample.hpp"
+
+namespace dc::rules {
+
+namespace {
+
+std::vector<std::string> source_labels(const std::vector<int>& sources, const std::vector<Eq>& eqs) {
+  std::vector<int> idx = sources;
+  std::sort(idx.begin(), idx.end());
+  std::vector<std::string> out;
+  auto add = [&](const std::string& l) {
+    if (std::find(out.begin(), out.end(), l) == out.end()) out.push_back(l);
+  };
+  for (int i : idx) {
+    add(eqs[i].from);
+    for (const auto& l : eqs[i].also) add(l);
+  }
+  return out;
+}
+
+std::string quoted_list(const std::vector<std::string>& labels) {
+  std::string out;
+  for (std::size_t i = 0; i < labels.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == labels.size() ? " and " : ", ") + ("'" + labels[i] + "'");
+  return out;
+}
+
+// The rule argument that names a label (for error positions); the rule itself otherwise.
+std::pair<SourcePos, int> argument_position(const RuleSpec& rule, const std::string& label) {
+  for (const auto* group : {&rule.refs, &rule.into, &rule.with})
+    for (const auto& a : *group)
+      if (a.label == label) return {a.pos, a.length};
+  return {rule.pos, 2};
+}
+
+void application_args(const ex& e, std::vector<ex>& out) {
+  if (pool_function_index(e) >= 0 && e.nops() >= 1) {
+    for (const auto& o : out)
+      if (o.is_equal(e.op(0))) return;
+    out.push_back(e.op(0));
+    return;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i) application_args(e.op(i), out);
+}
+
+// An equation between function applications of one parameter s (p(t) = m*v(t)) holds for
+// every value of s: add its instances at the other arguments the claim uses (t1, t2). An
+// equation without applications is between plain symbols, each one value: it is used as is.
+std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, const ex& claim) {
+  std::vector<ex> want;
+  application_args(claim, want);
+  std::sort(want.begin(), want.end(), [&](const ex& x, const ex& y) { return c.text(x) < c.text(y); });
+  std::vector<Eq> out = eqs;
+  if (want.empty()) return out;
+  bool claim_has_derivative = false;
+  {
+    std::function<void(const ex&)> walk = [&](const ex& e) {
+      if (GiNaC::is_a<GiNaC::fderivative>(e)) claim_has_derivative = true;
+      for (std::size_t i = 0; i < e.nops(); ++i) walk(e.op(i));
+    };
+    walk(claim);
+  }
+  for (const auto& q : eqs) {
+    std::vector<ex> args;
+    application_args(q.e, args);
+    if (args.size() != 1 || !GiNaC::is_a<GiNaC::symbol>(args[0])) continue;
+    const GiNaC::symbol& s = GiNaC::ex_to<GiNaC::symbol>(args[0]);
+    // it holds for every s, so its derivative in s holds too (p(t) = m v(t) gives p' = m v')
+    std::vector<ex> forms{q.e};
+    if (claim_has_derivative) {
+      ex d = q.e.diff(s);
+      if (!d.is_zero()) forms.push_back(d);
+    }
+    for (std::size_t k = 0; k < forms.size(); ++k) {
+      if (k > 0) out.push_back({forms[k], ex(), q.from});
+      for (const auto& w : want)
+        if (!w.is_equal(args[0]))
+          out.push_back({forms[k].subs(args[0] == w, GiNaC::subs_options::no_pattern), ex(), q.from});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string reference_names(const std::vector<int>& sources, const std::vector<Eq>& eqs) {
+  std::vector<std::string> labels = source_labels(sources, eqs);
+  return (labels.size() == 1 ? "reference " : "references ") + quoted_list(labels);
+}
+
+void reject_contradictions(StepContext& c, const Reduction& red, const std::vector<Eq>& eqs) {
+  for (const auto& l : red.leftover) {
+    ex e = c.atoms.restore(l.e);
+    if (!free_of_unknowns(e)) continue;
+    bool contradiction = GiNaC::is_a<GiNaC::numeric>(e)
+                             ? !e.is_zero()
+                             : prove_zero(e, c.d.symbols, c.opt).kind == VerdictKind::Refuted;
+    if (!contradiction) continue;
+    std::vector<std::string> labels = source_labels(l.sources, eqs);
+    std::string msg = labels.size() == 1
+                          ? "the reference '" + labels[0] + "' contradicts itself: it leaves " + c.text(e) + " = 0"
+                          : "the references " + quoted_list(labels) + " contradict each other: together they leave " +
+                                c.text(e) + " = 0";
+    if (!l.used.empty()) {
+      std::string names;
+      for (const auto& u : l.used) names += (names.empty() ? "" : ", ") + c.text(c.atoms.restore(u));
+      msg += " (after eliminating " + names + ")";
+    }
+    auto [pos, len] = argument_position(c.rule(), labels.back());
+    throw StepError{positioned(c.d, pos, msg, len), true};
+  }
+}
+
+bool has_application_at(const ex& e, const ex& s) {
+  if (pool_function_index(e) >= 0 && e.nops() >= 1 && e.op(0).is_equal(s)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_application_at(e.op(i), s)) return true;
+  return false;
+}
+
+Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred) {
+  if (eqs0.empty()) return prove_equal(a, b, c.d.symbols, c.opt);
+  std::vector<Eq> eqs = instantiate(c, eqs0, a - b);
+  Bans bans;
+  Reduction red;
+  Verdict v;
+  for (int attempt = 0;; ++attempt) {
+    red = reduce(c, eqs, a - b, preferred, false, bans);
+    reject_contradictions(c, red, eqs);
+    ex ra = reduced(c, a, red), rb = reduced(c, b, red);
+    v = prove_equal(ra, rb, c.d.symbols, c.opt);
+    if (v.kind != VerdictKind::Refuted) break;
+    Gap gap = counterexample_gap(c, red, eqs, v);
+    if (gap.why.empty()) break;
+    if (gap.elimination && attempt < 3 && bans.insert({gap.elimination->equation, gap.elimination->key}).second)
+      continue;
+    std::string after = red.eliminated.empty() ? "" : " after eliminating " + eliminated_text(c, red);
+    Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
+    u.residual = c.text(ra - rb);
+    v = u;
+    break;
+  }
+  if (red.degenerate && v.holds())
+    v = undecided(v.method, "every order of elimination divides by a coefficient that vanishes identically");
+  if (red.resource_limit && !v.holds()) {
+    v = undecided(v.method,
+                  "resource limit: an equation would expand beyond " + std::to_string(c.opt.max_terms) + " terms");
+  }
+  if (!red.eliminated.empty()) {
+    std::string el = "eliminating " + eliminated_text(c, red) + " with the references";
+    v.detail = v.detail.empty() ? el : v.detail + "; " + el;
+  }
+  return v;
+}
+
+Verdict links_follow(StepContext& c, const std::vector<ex>& sd, const std::vector<Eq>& eqs,
+                     const std::string& rule_method, const std::vector<ex>& preferred) {
+  Combiner all;
+  for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+    Verdict v = follows(c, sd[i], sd[i + 1], eqs, preferred);
+    v.method = prefix_method(rule_method, v.method);
+    all.add(v, sd.size() > 2 ? "link " + std::to_string(i + 1) + " (" + c.text(sd[i]) + " = " + c.text(sd[i + 1]) + ")"
+                             : "");
+  }
+  return all.result();
+}
+
+}  // namespace dc::rules

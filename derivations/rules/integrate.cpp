@@ -1,0 +1,143 @@
+// `by integrate [refs] wrt t [from T0] [with y(T0) = value, ...]`, two forms:
+//   - the claim `integral(f, x, a, b) = G`: dG/db = f(b) and G = 0 at b = a (or, when the
+//     upper limit also appears in the integrand, rigorous quadrature at sampled parameters);
+//   - the ODE form: the reference A is `diff(Y, t) = f` and the claim `Y = G`: dG/dt = f with
+//     Y = G, and G takes the initial value at T0.
+// The references hold at the bounds: only equations between function applications of t hold
+// for every t (see has_application_at); the others are used as they are.
+#include "derivations/core/prove_detail.hpp"
+#include "derivations/kernel/quadrature.hpp"
+#include "derivations/rules/dispatch.hpp"
+#include "derivations/rules/follows.hpp"
+
+namespace dc::rules {
+
+namespace {
+
+// The references, plus their instances at each of `at` (for those that hold for every t).
+std::vector<Eq> at_points(const std::vector<Eq>& eqs, const ex& t, const std::vector<ex>& at) {
+  std::vector<Eq> out = eqs;
+  for (const auto& p : at)
+    for (const auto& q : eqs)
+      if (has_application_at(q.e, t)) out.push_back({q.e.subs(t == p), ex(), q.from});
+  return out;
+}
+
+// integral(f, x, a, b) = G (side0 is the integral, resolved).
+Verdict definite_integral(StepContext& c, const Relation& claim, const Node& side0, const ex& t,
+                          const std::vector<Eq>& ref_eqs) {
+  const SymbolTable& symbols = c.d.symbols;
+  if (side0.args.size() != 4) c.fail(side0.pos, "expected integral(f, x, a, b)", side0.length);
+  ex f = to_ginac(side0.args[0], symbols);
+  ex x = to_ginac(side0.args[1], symbols);
+  ex a = to_ginac(side0.args[2], symbols);
+  ex b = to_ginac(side0.args[3], symbols);
+  if (!GiNaC::is_a<GiNaC::symbol>(b))
+    c.fail(side0.args[3].pos, "the upper limit of the integral must be a symbol (it is differentiated)",
+           side0.args[3].length);
+  if (!x.is_equal(t))
+    c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
+  if (claim.sides.size() < 2) c.fail(c.s.claim_pos, "expected 'integral(f, x, a, b) = G'");
+  std::vector<Eq> eqs = at_points(ref_eqs, t, {b, a});
+  const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
+  Combiner all;
+  if (f.has(b)) {
+    // The upper limit also appears in the integrand: d/db of the integral is not f(b), so
+    // the closed form is checked against a rigorous quadrature at sampled parameter values.
+    // A refutation stands only when every reference can be satisfied independently of the
+    // point (it constrains a function that neither the integrand nor the claim uses).
+    bool refs_independent = true;
+    for (const auto& q : ref_eqs)
+      refs_independent =
+          refs_independent && detail::has_abstract_application(q.e) && !detail::has_abstract_application(f);
+    for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+      ex G = c.conv(claim.sides[i]);
+      refs_independent = refs_independent && !detail::has_abstract_application(G);
+      Verdict v = kernel::probe_definite_integral(f, GiNaC::ex_to<GiNaC::symbol>(t), a, b, G, symbols, c.opt);
+      if (v.kind == VerdictKind::Refuted && !refs_independent)
+        v = undecided("rigorous quadrature", "the quadrature differs from the closed form at a point that need not "
+                                             "satisfy the references");
+      all.add(v, claim.sides.size() > 2 ? "side " + std::to_string(i + 1) : "");
+    }
+    c.res.derived = "the integrand depends on the upper limit " + c.text(b) + ": checked by rigorous quadrature";
+    return all.result();
+  }
+  for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+    ex G = c.conv(claim.sides[i]);
+    Verdict v1 = follows(c, G.diff(bs), f.subs(x == b), eqs);
+    v1.method = prefix_method("d/d" + c.text(b) + " of the closed form", v1.method);
+    all.add(v1, "side " + std::to_string(i + 1) + ", derivative");
+    Verdict v2 = follows(c, G.subs(b == a), 0, eqs);
+    v2.method = prefix_method("value at the lower limit", v2.method);
+    all.add(v2, "side " + std::to_string(i + 1) + ", at " + c.text(b) + " = " + c.text(a));
+    if (i == 1) c.res.derived = "d/d" + c.text(b) + " (" + c.text(G) + ") = " + c.text(G.diff(bs));
+  }
+  return all.result();
+}
+
+// The ODE form: A is diff(Y, t) = f; the claim is Y = G.
+Verdict ode_form(StepContext& c, const Relation& claim, const ex& t, const ex& T0) {
+  const RuleSpec& rule = c.rule();
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  const Relation& ar = claim_of(c.ref_step(rule.refs[0]));
+  Node alhs = resolve_definitions(c.d, ar.sides[0]);
+  if (ar.sides.size() < 2 || alhs.kind != NodeKind::Call || alhs.text != "diff" || alhs.args.size() < 2 ||
+      (alhs.args.size() == 3 && to_text(alhs.args[2]) != "1"))
+    c.fail(rule.refs[0].pos, "'" + rule.refs[0].label + "' must be an ODE 'diff(y(t), t) = f' for 'by integrate'",
+           rule.refs[0].length);
+  ex Y = to_ginac(alhs.args[0], c.d.symbols);
+  ex f = c.conv(ar.sides.back());
+  if (claim.sides.size() < 2) c.fail(c.s.claim_pos, "expected the claim 'y(t) = G'");
+  ex cl = c.conv(claim.sides[0]);
+  if (!cl.is_equal(Y)) {
+    Verdict v = prove_equal(cl, Y, c.d.symbols, c.opt);
+    if (!v.holds())
+      c.fail(claim.sides[0].pos,
+             "the claim must start with '" + to_text(alhs.args[0]) + " = ...' (the function of the ODE)",
+             claim.sides[0].length);
+  }
+  // initial value
+  ex y0 = Y.subs(t == T0), y0_value = y0;
+  Substitutions at_T0;   // other values at T0, e.g. m_r(0) = m0
+  for (const auto& w : rule.with) {
+    ex l = c.conv(w.equation.sides[0]), r = c.conv(w.equation.sides[1]);
+    if (l.is_equal(y0)) y0_value = r;
+    else if (GiNaC::is_a<GiNaC::symbol>(l) || GiNaC::is_a<GiNaC::function>(l)) at_T0.push_back({l, r});
+    else
+      c.fail(w.pos,
+             "expected 'y(T0) = value' after 'with' (the initial value of " + c.text(y0) + " or of another function)",
+             w.length);
+  }
+  std::vector<Eq> extra;
+  for (std::size_t i = 1; i < rule.refs.size(); ++i) {
+    auto e = c.equations(rule.refs[i]);
+    extra.insert(extra.end(), e.begin(), e.end());
+  }
+  extra = at_points(extra, t, {T0});
+  Combiner all;
+  for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+    ex G = c.conv(claim.sides[i]);
+    ex fG = f.subs(Y == G);
+    Verdict v1 = follows(c, G.diff(ts), fG, extra);
+    v1.method = prefix_method("d/d" + c.text(t) + " of the closed form", v1.method);
+    all.add(v1, "side " + std::to_string(i + 1) + ", derivative");
+    Verdict v2 = follows(c, apply_subs(G.subs(t == T0), at_T0), apply_subs(y0_value, at_T0), extra);
+    v2.method = prefix_method("initial value", v2.method);
+    all.add(v2, "side " + std::to_string(i + 1) + ", at " + c.text(t) + " = " + c.text(T0));
+    if (i == 1) c.res.derived = "d/d" + c.text(t) + " (" + c.text(G) + ") = " + c.text(G.diff(ts));
+  }
+  return all.result();
+}
+
+}  // namespace
+
+Verdict integrate(StepContext& c, const Relation& claim) {
+  ex t = c.symbol_of(*c.rule().var);
+  ex T0 = c.conv(c.rule().point->value);
+  std::vector<Eq> ref_eqs = c.all_equations(c.rule().refs);
+  Node side0 = resolve_definitions(c.d, claim.sides[0]);
+  if (side0.kind == NodeKind::Call && side0.text == "integral") return definite_integral(c, claim, side0, t, ref_eqs);
+  return ode_form(c, claim, t, T0);
+}
+
+}  // namespace dc::rules

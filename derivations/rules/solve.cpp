@@ -1,0 +1,229 @@
+// `by solve E... for u, ...`: the claim `u = G` is the solution of the equations for the
+// unknowns (symbols, or expressions such as sin(theta), replaced by stand-in symbols).
+//   - Linear in the unknowns: lsolve derives the solution (only when the equations determine
+//     the unknowns: some square choice of them has a determinant that is not identically zero)
+//     and prove_equal compares the claim with it.
+//   - Otherwise the claim is substituted back: with u = G and the other unknowns (and the
+//     quantities that only link the equations) eliminated, each equation must reduce to an
+//     identity; G must lie in the declared domain of u, and no other root may
+//     (solve_roots.cpp).
+//   - A claim that is not `u = ...` for an unknown must follow from the equations.
+#include <algorithm>
+#include <optional>
+
+#include "derivations/rules/dispatch.hpp"
+#include "derivations/rules/elimination.hpp"
+#include "derivations/rules/follows.hpp"
+#include "derivations/rules/solve.hpp"
+
+namespace dc::rules {
+
+namespace {
+
+// Does the linear system `nums` (linear in the unknowns) determine them? Only when some
+// square choice of its equations has a coefficient determinant that is not identically zero:
+// lsolve divides by pivots without knowing that log(a*b) - log(a) - log(b) is zero.
+bool determines(StepContext& c, const std::vector<ex>& nums, const std::vector<ex>& unknowns) {
+  const std::size_t n = unknowns.size(), m = nums.size();
+  if (n == 0 || m < n) return false;
+  std::vector<bool> pick(m, false);   // the chosen equations; combinations in lexicographic order
+  std::fill(pick.begin(), pick.begin() + static_cast<long>(n), true);
+  int tries = 0;
+  do {
+    GiNaC::matrix A(static_cast<unsigned>(n), static_cast<unsigned>(n));
+    unsigned r = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+      if (!pick[i]) continue;
+      for (std::size_t j = 0; j < n; ++j) A(r, static_cast<unsigned>(j)) = nums[i].coeff(unknowns[j], 1);
+      ++r;
+    }
+    try {
+      if (nonzero_coefficient(c, A.determinant())) return true;
+    } catch (const std::exception&) {
+      // an unusable determinant: try the next choice
+    }
+  } while (++tries < 64 && std::prev_permutation(pick.begin(), pick.end()));
+  return false;
+}
+
+// The linear case: lsolve, then the claim compared with the solution. nullopt when the
+// equations are not linear in the unknowns or lsolve does not determine them.
+std::optional<Verdict> solve_linear(StepContext& c, const Unknowns& u, const std::vector<ex>& E,
+                                    const std::vector<ex>& sd) {
+  bool linear = E.size() >= u.syms.size();
+  std::vector<ex> nums;
+  for (const auto& e : E) {
+    ex num;
+    try {
+      num = GiNaC::numer(GiNaC::normal(e)).expand();
+    } catch (const std::exception&) {
+      linear = false;
+      break;
+    }
+    nums.push_back(num);
+    for (const auto& x : u.syms) {
+      ex k = num.coeff(x, 1);
+      ex rest = (num - k * x).expand();
+      if (rest.has(x) || has_any(k, u.syms)) linear = false;
+    }
+  }
+  if (linear && !determines(c, nums, u.syms)) {
+    std::string names;
+    for (const auto& x : u.syms) names += (names.empty() ? "" : ", ") + c.text(u.out(c, x));
+    return undecided("lsolve", "the equations do not determine " + names +
+                                   ": the determinant of their coefficients vanishes identically");
+  }
+  if (!linear) return std::nullopt;
+  GiNaC::lst eqlist, varlist;
+  for (const auto& n : nums) eqlist.append(n == 0);
+  for (const auto& x : u.syms) varlist.append(x);
+  ex sol;
+  try {
+    sol = GiNaC::lsolve(eqlist, varlist);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (!GiNaC::is_a<GiNaC::lst>(sol) || sol.nops() != u.syms.size()) return std::nullopt;
+  GiNaC::exmap solmap;
+  for (std::size_t i = 0; i < sol.nops(); ++i) {
+    ex var = sol.op(i).lhs(), val = sol.op(i).rhs();
+    if (has_any(val, u.syms)) return std::nullopt;
+    solmap[var] = val;
+  }
+  std::string derived;
+  for (const auto& x : u.syms) {
+    ex val = u.out(c, solmap[x]);
+    derived += (derived.empty() ? "" : "; ") + c.text(u.out(c, x)) + " = " + c.text(val);
+    for (auto& sc : side_conditions(val, c.d.symbols)) c.res.verdict.side_conditions.push_back(sc);
+  }
+  c.res.derived = derived;
+  Combiner all;
+  for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
+    ex a = u.out(c, u.in(c, sd[i]).subs(solmap)), b = u.out(c, u.in(c, sd[i + 1]).subs(solmap));
+    Verdict v = prove_equal(a, b, c.d.symbols, c.opt);
+    v.method = prefix_method("lsolve", v.method);
+    all.add(v, sd.size() > 2 ? "link " + std::to_string(i + 1) : "");
+  }
+  return all.result();
+}
+
+// The nonlinear case for the claim u = G (u the unknown `which`): G substituted back, and G
+// must be the only root (solve_roots.cpp). `eqs`: the equations E with their labels.
+Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>& E, const std::vector<Eq>& eqs,
+                        const std::vector<ex>& sd, std::size_t which) {
+  const ex& lhs = u.syms[which];
+  Combiner all;
+  std::vector<ex> others;
+  for (std::size_t i = 0; i < u.syms.size(); ++i)
+    if (i != which) others.push_back(u.syms[i]);
+  for (std::size_t k = 1; k < sd.size(); ++k) {
+    ex G = u.in(c, sd[k]);
+    if (G.has(lhs)) c.fail(c.s.claim_pos, "the claimed solution for '" + c.text(u.out(c, lhs)) + "' contains it");
+    std::vector<Eq> back;
+    for (const auto& e : E) back.push_back({e.subs(lhs == G), ex(), ""});
+    // Quantities of the equations that the claim does not mention (v1, dh in the ballistic
+    // pendulum) are intermediate: they are eliminated together with the other unknowns.
+    // A quantity counts as intermediate when it links at least two of the equations (a
+    // parameter such as g in a single equation is not eliminated: that would use the equation
+    // up instead of checking it).
+    std::vector<ex> elim = others, in_eqs;
+    for (const auto& q : back) in_eqs.push_back(q.e);
+    for (const auto& sym : c.symbols_in(in_eqs)) {
+      int count = 0;
+      for (const auto& q : back) count += q.e.has(sym) ? 1 : 0;
+      if (count >= 2 && !G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
+    }
+    Reduction red = reduce(c, back, ex(0), elim, true);
+    int checked = 0;
+    for (const auto& left : red.leftover) {
+      Verdict v = prove_zero(c.atoms.restore(u.out(c, left.e)), c.d.symbols, c.opt);
+      v.method = prefix_method("claim substituted back", v.method);
+      all.add(v, "equation with " + c.text(u.out(c, lhs)) + " = " + c.text(u.out(c, G)));
+      ++checked;
+    }
+    if (red.resource_limit) all.add(undecided("claim substituted back", "resource limit"), "");
+    if (red.degenerate)
+      all.add(undecided("claim substituted back",
+                        "every order of elimination divides by a coefficient that vanishes identically"),
+              "");
+    if (checked == 0 && !red.resource_limit) {
+      // Every equation was used to eliminate another unknown, or reduced to 0: the claim
+      // satisfies all of them identically.
+      if (red.vanished == 0)
+        all.add(undecided("claim substituted back", "the equations do not determine " + c.text(u.out(c, lhs)) +
+                                                        " (they are used up by the other unknowns)"),
+                "");
+      else
+        all.add(proved("claim substituted back (normal)"), "");
+    }
+    // The declared domain of the unknown picks the root: v0 : negative for v0 = -sqrt(...).
+    std::string root_note;
+    if (GiNaC::is_a<GiNaC::symbol>(u.out(c, lhs))) {
+      const SymbolInfo* info = c.d.symbols.find(GiNaC::ex_to<GiNaC::symbol>(u.out(c, lhs)));
+      if (info && info->domain.kind != Domain::Kind::Real && info->domain.kind != Domain::Kind::Interval) {
+        bool neg = info->domain.kind == Domain::Kind::Negative;
+        ex g = u.out(c, G);
+        Verdict v = prove_equal(GiNaC::sqrt(GiNaC::pow(g, 2)), neg ? -g : g, c.d.symbols, c.opt);
+        v.method = prefix_method("root in the declared domain", v.method);
+        all.add(v, "the claimed root must be " + info->domain.to_string() + " like " + info->name, true);
+        root_note = " (the root is the one in the declared domain: " + info->name + " " + info->domain.to_string() + ")";
+      }
+    }
+    // ... and no other root may lie in the domain (y = w from y^2 = w^2 with y real is false at y = -w)
+    std::string how;
+    Verdict only = only_root(c, u, eqs, which, G, elim, how);
+    all.add(only, "", true);
+    if (only.kind == VerdictKind::Refuted) root_note = " (another root lies in the declared domain)";
+    else if (!only.holds()) root_note = " (other roots are not excluded)";
+    else if (root_note.empty()) root_note = " (" + how + ")";
+    c.res.derived = "nonlinear in the unknowns: the claim " + c.text(u.out(c, lhs)) + " = " + c.text(u.out(c, G)) +
+                    " was substituted into the equations" + root_note;
+  }
+  return all.result();
+}
+
+}  // namespace
+
+Verdict solve(StepContext& c, const Relation& claim) {
+  const RuleSpec& rule = c.rule();
+  std::vector<Eq> eqs = c.all_equations(rule.refs);
+  std::vector<ex> sd = c.sides(claim);
+  if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by solve' must be an equation 'x = expression'");
+  Unknowns u;
+  int k = 0;
+  for (const auto& arg : rule.unknowns) {
+    ex e = c.atoms(c.conv(arg.value));
+    if (!GiNaC::is_a<GiNaC::symbol>(e)) {
+      GiNaC::realsymbol s("dc_unknown" + std::to_string(k++));
+      u.standin[e] = s;
+      u.standback[s] = e;
+      e = s;
+    }
+    u.syms.push_back(e);
+  }
+  std::vector<ex> E;
+  std::vector<Eq> in_eqs;   // E with the labels
+  for (auto& q : eqs) {
+    E.push_back(u.in(c, q.e));
+    in_eqs.push_back({E.back(), ex(), q.from, q.also});
+  }
+  for (std::size_t i = 0; i < u.syms.size(); ++i) {
+    bool appears = false;
+    for (const auto& e : E) appears = appears || e.has(u.syms[i]);
+    if (!appears)
+      c.fail(rule.unknowns[i].pos, "the unknown '" + rule.unknowns[i].label + "' does not appear in the equations",
+             rule.unknowns[i].length);
+  }
+  if (auto v = solve_linear(c, u, E, sd)) return *v;
+  // Nonlinear (or not uniquely solvable): substitute the claim back. The claim must be
+  // `u = G` for an unknown u; each equation, with u = G and the other unknowns eliminated,
+  // must reduce to an identity.
+  ex lhs = u.in(c, sd[0]);
+  for (std::size_t i = 0; i < u.syms.size(); ++i)
+    if (lhs.is_equal(u.syms[i])) return substitute_back(c, u, E, in_eqs, sd, i);
+  std::vector<ex> preferred;
+  for (auto& x : u.syms) preferred.push_back(u.out(c, x));
+  return links_follow(c, sd, eqs, "solve (elimination)", preferred);
+}
+
+}  // namespace dc::rules

@@ -1,0 +1,59 @@
+// `by substitute S... into C [with x = value]`: the claim must follow from C with the
+// substitutions applied and from the substitutions themselves taken as equations. (The claim
+// may still mention a substituted name, T = 2*pi/omega, or a defined name whose definition
+// brings one in; a counterexample must then respect omega = sqrt(k/m) too.)
+#include <algorithm>
+
+#include "derivations/core/functions.hpp"
+#include "derivations/rules/dispatch.hpp"
+#include "derivations/rules/follows.hpp"
+
+namespace dc::rules {
+
+Verdict substitute(StepContext& c, const Relation& claim) {
+  const RuleSpec& rule = c.rule();
+  std::vector<Eq> extra;   // references that are not `x = value`: equations only (added below)
+  std::vector<std::string> labels;
+  auto subs = c.substitutions(rule.refs, &extra, &labels);
+  auto w = c.substitutions(rule.with, nullptr, &labels);
+  subs.insert(subs.end(), w.begin(), w.end());
+
+  // C with the substitutions applied: C'
+  const Step& into = c.ref_step(rule.into[0]);
+  std::vector<ex> cs = c.sides(claim_of(into));
+  std::vector<std::string> applied;   // the substitutions C' rests on
+  for (auto& e : cs) {
+    std::vector<bool> used;
+    e = apply_subs(e, subs, &used);
+    for (std::size_t i = 0; i < used.size(); ++i)
+      if (used[i] && std::find(applied.begin(), applied.end(), labels[i]) == applied.end()) applied.push_back(labels[i]);
+  }
+
+  // The equations: C' and every reference and substitution
+  std::vector<Eq> eqs;
+  for (std::size_t i = 0; i + 1 < cs.size(); ++i) {
+    Eq q{cs[i] - cs[i + 1], ex(), into.label, applied};
+    if (i == 0 && (GiNaC::is_a<GiNaC::symbol>(cs[0]) || pool_function_index(cs[0]) >= 0)) q.hint = cs[0];
+    eqs.push_back(q);
+  }
+  for (const auto* group : {&rule.refs, &rule.with})
+    for (const auto& a : *group) {
+      auto e = c.equations(a);
+      eqs.insert(eqs.end(), e.begin(), e.end());
+    }
+  if (cs.size() >= 2) c.res.derived = c.text(cs.front()) + " = " + c.text(cs.back());
+  else if (!cs.empty()) c.res.derived = c.text(cs.front());
+
+  std::vector<ex> sd = c.sides(claim);
+  if (cs.size() < 2) {
+    // substituting into an expression: the claim must be that expression
+    if (sd.size() != 1) c.fail(rule.into[0].pos, "'" + into.label + "' is an expression; the claim must be one too");
+    Verdict v = follows(c, sd[0], cs[0], eqs);
+    v.method = prefix_method("substitute", v.method);
+    return v;
+  }
+  if (sd.size() < 2) c.fail(c.s.claim_pos, "expected an equation as the claim of 'by substitute'");
+  return links_follow(c, sd, eqs, "substitute");
+}
+
+}  // namespace dc::rules
