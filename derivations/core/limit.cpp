@@ -67,8 +67,8 @@ std::string confirm_numerically(const ex& f, const ex& x, const ex& point, int a
     p.erase(x);
     ex fp, Lp;
     try {
-      fp = f.subs(p, GiNaC::subs_options::no_pattern);
-      Lp = L.subs(p, GiNaC::subs_options::no_pattern);
+      fp = d::subs_point(f, p);
+      Lp = d::subs_point(L, p);
     } catch (const std::exception&) {
       continue;
     }
@@ -86,7 +86,7 @@ std::string confirm_numerically(const ex& f, const ex& x, const ex& point, int a
         ex xv = at_infinity != 0 ? ex(at_infinity * pow10(k)) : point + side * pow10(-k);
         d::RealValue fv;
         try {
-          fv = d::eval_real(fp.subs(x == xv), 50);
+          fv = d::eval_real(d::subs_point(fp, GiNaC::exmap{{x, xv}}), 50);
         } catch (const std::exception&) {
           fv.ok = false;
         }
@@ -261,13 +261,13 @@ std::string check_series_side(const ex& f, const ex& s, const ex& x, const ex& p
       const long ks[2] = {8, 16};
       for (int i = 0; i < 2; ++i) {
         GiNaC::exmap q = p;
-        q[x] = point.subs(p, GiNaC::subs_options::no_pattern) + side * pow10(-ks[i]);
+        q[x] = d::subs_point(point, p) + side * pow10(-ks[i]);
         // this side must belong to the declared domain and the assumptions
         const ex xv = q[x];
         if (GiNaC::is_a<numeric>(xv) && !d::domain_of(x, ctx).contains(GiNaC::ex_to<numeric>(xv))) return "";
         for (const Constraint& c : ctx.constraints())
           if (!c.holds_at(q)) return "";
-        rem[i] = GiNaC::abs(f.subs(q, GiNaC::subs_options::no_pattern) - s.subs(q, GiNaC::subs_options::no_pattern));
+        rem[i] = GiNaC::abs(d::subs_point(f, q) - d::subs_point(s, q));
       }
     } catch (const std::exception&) {
       continue;   // undefined there
