@@ -205,8 +205,8 @@ void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const st
     others.erase(syms[i]);
     ex a, b;
     try {
-      a = d.coeff(sym, 1).subs(others);
-      b = d.coeff(sym, 0).subs(others);
+      a = subs_point(d.coeff(sym, 1), others);
+      b = subs_point(d.coeff(sym, 0), others);
     } catch (const std::exception&) {
       continue;
     }

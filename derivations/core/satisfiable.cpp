@@ -329,7 +329,7 @@ std::optional<numeric> numeric_value(const ex& e) {
 bool holds_surely(const Constraint& c, const GiNaC::exmap& p) {
   ex d;
   try {
-    d = (c.lhs - c.rhs).subs(p);
+    d = detail::subs_point(c.lhs - c.rhs, p);
   } catch (const std::exception&) {
     return false;
   }
@@ -506,8 +506,8 @@ class Search {
       others.erase(syms_[i]);
       ex a, b;
       try {
-        a = d.coeff(s, 1).subs(others);
-        b = d.coeff(s, 0).subs(others);
+        a = detail::subs_point(d.coeff(s, 1), others);
+        b = detail::subs_point(d.coeff(s, 0), others);
       } catch (const std::exception&) {
         continue;
       }
