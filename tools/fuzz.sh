@@ -4,11 +4,12 @@
 #     TARGET  dc_file | expr | claims | assume | all (default all)
 #     RUNS    executions per target (default 1000000; -1 = until stopped or a crash)
 #   e.g. tools/fuzz.sh expr 2000000       tools/fuzz.sh claims 200000 -max_total_time=3600
+#   SESSION=N: executions per fuzzer process (default 250000; see below), JOBS=N: build jobs
 # Configures build-fuzz/ with clang-14 and -DDERIVCHECK_FUZZ=ON (libraries instrumented with
 # -fsanitize=fuzzer-no-link,address,undefined), builds at nice 10, seeds each target from the
 # repository's derivations and test data (build-fuzz/seeds/), keeps the grown corpus in
 # build-fuzz/corpus/TARGET, writes crashing inputs to build-fuzz/crashes/TARGET/ and the log to
-# build-fuzz/logs/TARGET.log. Exit status is non-zero when any target found a crash.
+# build-fuzz/logs/TARGET.N.log (session N). Exit status is non-zero when any target found a crash.
 # Reproduce a crash: build-fuzz/bench/fuzz/fuzz_TARGET build-fuzz/crashes/TARGET/crash-...
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
@@ -85,25 +86,43 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1${ASAN_OPTIONS:+
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
 export LSAN_OPTIONS="suppressions=$root/tools/lsan.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 
+# Sessions: RUNS is split into processes of at most SESSION executions (default 250000), each
+# starting from the corpus the previous one grew. The process's memory grows with every input
+# that makes GiNaC throw (GiNaC leaks ~100 bytes each time, tools/lsan.supp; under ASan the
+# allocator adds more), so one process for 10^6 checker-heavy inputs would hit the RSS limit.
+session="${SESSION:-250000}"
 status=0
 mkdir -p "$build/logs"
 for t in "${targets[@]}"; do
   mkdir -p "$build/corpus/$t" "$build/crashes/$t"
-  log="$build/logs/$t.log"
-  echo "fuzz.sh: fuzz_$t, $runs runs (log $log)"
-  set +e
-  nice -n 10 "$build/bench/fuzz/fuzz_$t" -runs="$runs" -max_len="${max_len[$t]}" -timeout="${timeout[$t]}" \
-    -rss_limit_mb=4096 -detect_leaks="${leaks[$t]}" -dict="$root/bench/fuzz/${dict[$t]}" -artifact_prefix="$build/crashes/$t/" \
-    -print_final_stats=1 "$@" "$build/corpus/$t" "$seeds/$t" >"$log" 2>&1
-  rc=$?
-  set -e
-  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  eps=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
-  last=$(grep -E '^#[0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[^ ]+' || true)
-  secs=$(grep -E '^Done [0-9]+ runs in' "$log" | grep -oE '[0-9]+ second' | grep -oE '[0-9]+' || true)
+  rm -f "$build/logs/$t".*.log
+  echo "fuzz.sh: fuzz_$t, $runs runs in sessions of at most $session (logs $build/logs/$t.N.log)"
+  total=0; total_secs=0; n_sess=0; rc=0; left="$runs"
+  while :; do
+    if [ "$runs" -lt 0 ]; then this=-1; else this=$(( left < session ? left : session )); fi
+    n_sess=$((n_sess + 1))
+    log="$build/logs/$t.$n_sess.log"
+    set +e
+    nice -n 10 "$build/bench/fuzz/fuzz_$t" -runs="$this" -max_len="${max_len[$t]}" -timeout="${timeout[$t]}" \
+      -rss_limit_mb=4096 -detect_leaks="${leaks[$t]}" -dict="$root/bench/fuzz/${dict[$t]}" \
+      -artifact_prefix="$build/crashes/$t/" -print_final_stats=1 "$@" "$build/corpus/$t" "$seeds/$t" >"$log" 2>&1
+    rc=$?
+    set -e
+    execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+    secs=$(grep -E '^Done [0-9]+ runs in' "$log" | grep -oE '[0-9]+ second' | grep -oE '[0-9]+' || true)
+    [ -n "$secs" ] || secs=$(grep -E '^#[0-9]+' "$log" | tail -1 | awk '{for (i = 1; i < NF; i++) if ($i == "exec/s:") e = $(i + 1); n = substr($1, 2); if (e > 0) print int(n / e)}')
+    total=$((total + ${execs:-0})); total_secs=$((total_secs + ${secs:-0}))
+    last=$(grep -E '^#[0-9]+' "$log" | tail -1 | grep -oE 'cov: [0-9]+ ft: [0-9]+ corp: [0-9]+/[^ ]+' || true)
+    peak=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
+    echo "fuzz.sh:   session $n_sess: exit $rc, ${execs:-?} execs in ${secs:-?} s, peak RSS ${peak:-?} MB, ${last:-?}"
+    [ "$rc" -eq 0 ] || break
+    left=$((left - ${execs:-0}))
+    [ "$runs" -ge 0 ] && [ "$left" -gt 0 ] && [ "${execs:-0}" -gt 0 ] || break
+  done
+  eps=$(( total_secs > 0 ? total / total_secs : 0 ))
   crashes=$(find "$build/crashes/$t" -type f ! -name 'slow-unit-*' | wc -l)
   slow=$(find "$build/crashes/$t" -type f -name 'slow-unit-*' | wc -l)
-  echo "fuzz.sh: fuzz_$t exit $rc, ${execs:-?} execs in ${secs:-?} s (${eps:-?} exec/s), ${last:-?}," \
+  echo "fuzz.sh: fuzz_$t exit $rc, $total execs in $total_secs s ($eps exec/s) in $n_sess session(s), ${last:-?}," \
        "${crashes} crash/leak/timeout input(s) and ${slow} slow unit(s) (> 10 s, not failures) in crashes/$t"
   [ "$rc" -eq 0 ] || status=1
   # replay: every input of the corpus once, with leak checks
