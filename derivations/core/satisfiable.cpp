@@ -67,7 +67,12 @@ bool relation_holds(int sign, Op op) {
 // Float evaluation of a constant is trusted only when no exp or trigonometric function has an
 // argument too large for the working precision (GiNaC/CLN return 1.0 for exp(1e300) and 0.0
 // for sin(1e300)). The rigorous kernel will replace this with ball arithmetic.
+// The operands are checked first: the checks below evaluate them, and an operand that is itself
+// a tower such as a^(b^(c^d)) must be refused before it is evaluated (CLN turns a float exponent
+// of 10^(10^12) into an exact integer: an allocation of 855 GB, found by fuzz_assume).
 bool evaluation_trustworthy(const ex& e, long digits) {
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (!evaluation_trustworthy(e.op(i), digits)) return false;
   if (GiNaC::is_a<GiNaC::function>(e)) {
     std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
     bool big_exp = name == "exp" || name == "sinh" || name == "cosh";
@@ -96,8 +101,6 @@ bool evaluation_trustworthy(const ex& e, long digits) {
       return false;
     }
   }
-  for (std::size_t i = 0; i < e.nops(); ++i)
-    if (!evaluation_trustworthy(e.op(i), digits)) return false;
   return true;
 }
 

@@ -272,3 +272,19 @@ TEST_CASE("assumptions: a constraint with a tower of powers is decided without e
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   CHECK(seconds < 30);
 }
+
+// Regression (fuzz_assume, docs/hardening.md): deciding whether an evaluation can be trusted
+// evaluated a power's exponent before checking it, so for a tower of powers CLN was asked to turn
+// a float of about 10^(10^12) into an exact integer (an 855 GB allocation: AddressSanitizer aborts,
+// a plain build relies on malloc failing). The operands are now checked first; the assumption is
+// an ordinary input (decided, or an input error naming it), never a crash.
+TEST_CASE("assumptions: a tower of powers in a constraint is never evaluated as a whole", "[assume][hardening]") {
+  for (const char* a : {"x^NNNN^NNNNMMMMMMNNNN^NJJ3 ^MMN> M", "x > -re8^(-6)^ly", "a^b^c^d^e > 1"}) {
+    CAPTURE(a);
+    try {
+      (void)dc::check_equal("x", "x", a);
+    } catch (const dc::InputError& e) {
+      CHECK_FALSE(e.message().empty());
+    }
+  }
+}
