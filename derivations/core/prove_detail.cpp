@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include <cln/integer.h>
 #include <cln/rational.h>
 #include <cln/real.h>
 
@@ -184,6 +185,51 @@ RealValue eval_real(const ex& e, long digits) {
     r.why = "undefined (division by zero or a pole)";
   }
   return r;
+}
+
+namespace {
+
+constexpr long kMaxExactPowerDigits = 1000000;
+
+// Throws where GiNaC::pow(b, x) would throw (0^0, 0^(negative)) or would compute an exact
+// power of more than kMaxExactPowerDigits digits: GiNaC computes c^q exactly for the integer
+// part q of the exponent, which has about q * log10(max(|num c|, den c)) digits.
+void check_exact_power(const ex& b, const ex& x) {
+  if (!GiNaC::is_a<numeric>(b) || !GiNaC::is_a<numeric>(x)) return;
+  const numeric& nb = GiNaC::ex_to<numeric>(b);
+  const numeric& nx = GiNaC::ex_to<numeric>(x);
+  if (nb.is_zero()) {
+    if (nx.is_zero()) throw std::domain_error("0^0 is undefined");
+    if (!nx.real().is_positive()) throw GiNaC::pole_error("division by zero", 1);
+    return;
+  }
+  if (!nb.is_rational() || !nx.is_rational() || GiNaC::abs(nb) == 1) return;
+  long bits = std::max(cln::integer_length(cln::the<cln::cl_I>(nb.numer().to_cl_N())),
+                       cln::integer_length(cln::the<cln::cl_I>(nb.denom().to_cl_N())));
+  if (GiNaC::abs(nx) * numeric(bits) * numeric(30103, 100000) > numeric(kMaxExactPowerDigits))
+    throw std::range_error("an exact power at this point would have more than a million digits");
+}
+
+struct PointSubs : GiNaC::map_function {
+  const GiNaC::exmap& p;
+  explicit PointSubs(const GiNaC::exmap& m) : p(m) {}
+  ex operator()(const ex& e) override {
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+      ex b = (*this)(e.op(0));
+      ex x = (*this)(e.op(1));
+      check_exact_power(b, x);
+      return GiNaC::pow(b, x);
+    }
+    if (e.nops() == 0) return e.subs(p, GiNaC::subs_options::no_pattern);
+    return e.map(*this);
+  }
+};
+
+}  // namespace
+
+ex subs_point(const ex& e, const GiNaC::exmap& p) {
+  PointSubs f(p);
+  return f(e);
 }
 
 std::string exact_text(const numeric& q) {

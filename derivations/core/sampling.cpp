@@ -60,8 +60,8 @@ std::optional<LinearBound> linear_bound(const Constraint& c, const ex& s, const 
     if (!d.has(sym) || !d.is_polynomial(sym) || d.degree(sym) != 1) return std::nullopt;
     GiNaC::exmap others = p;
     others.erase(s);
-    a = d.coeff(sym, 1).subs(others);
-    b = d.coeff(sym, 0).subs(others);
+    a = subs_point(d.coeff(sym, 1), others);
+    b = subs_point(d.coeff(sym, 0), others);
   } catch (const std::exception&) {
     return std::nullopt;
   }

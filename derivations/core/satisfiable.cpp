@@ -300,7 +300,7 @@ std::optional<numeric> numeric_value(const ex& e) {
 bool holds_surely(const Constraint& c, const GiNaC::exmap& p) {
   ex d;
   try {
-    d = (c.lhs - c.rhs).subs(p);
+    d = detail::subs_point(c.lhs - c.rhs, p);
   } catch (const std::exception&) {
     return false;
   }

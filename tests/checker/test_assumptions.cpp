@@ -4,6 +4,7 @@
 // (magnitudes 1e-300..1e300, constraint boundaries) and only called impossible when certain.
 #include <catch2/catch.hpp>
 
+#include <chrono>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -255,6 +256,35 @@ TEST_CASE("satisfiability is decided over the whole declared domain", "[assumpti
     } catch (const dc::InputError& e) {
       CHECK(e.message().find("no point found") != std::string::npos);
       CHECK(e.message().find("cannot all hold") == std::string::npos);
+    }
+  }
+}
+
+// Regression (fuzz, docs/hardening.md): the satisfiability search substituted its exact sample
+// points into the constraints, and GiNaC then computed powers such as x^(x^12) exactly (an
+// exponent of 10^24 at x = 100): `equal x x --assume "x^(x^12) > 1, x > 0"` never returned.
+// Such points are now not evaluable; the other points still decide.
+TEST_CASE("assumptions: a constraint with a tower of powers is decided without exact huge powers",
+          "[assume][hardening]") {
+  auto t0 = std::chrono::steady_clock::now();
+  CHECK(dc::check_equal("x", "x", "x^(x^12) > 1, x > 0").holds());
+  CHECK(dc::check_equal("y", "y", "y > 0, x^(y^12) >= x*y, x > 1").holds());
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(seconds < 30);
+}
+
+// Regression (fuzz_assume, docs/hardening.md): deciding whether an evaluation can be trusted
+// evaluated a power's exponent before checking it, so for a tower of powers CLN was asked to turn
+// a float of about 10^(10^12) into an exact integer (an 855 GB allocation: AddressSanitizer aborts,
+// a plain build relies on malloc failing). The operands are now checked first; the assumption is
+// an ordinary input (decided, or an input error naming it), never a crash.
+TEST_CASE("assumptions: a tower of powers in a constraint is never evaluated as a whole", "[assume][hardening]") {
+  for (const char* a : {"x^NNNN^NNNNMMMMMMNNNN^NJJ3 ^MMN> M", "x > -re8^(-6)^ly", "a^b^c^d^e > 1"}) {
+    CAPTURE(a);
+    try {
+      (void)dc::check_equal("x", "x", a);
+    } catch (const dc::InputError& e) {
+      CHECK_FALSE(e.message().empty());
     }
   }
 }

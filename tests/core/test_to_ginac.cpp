@@ -9,6 +9,11 @@
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/units.hpp"
 
+#if defined(DERIVCHECK_SANITIZER) && __has_include(<sanitizer/lsan_interface.h>)
+#include <sanitizer/lsan_interface.h>
+#define DC_TEST_LSAN 1
+#endif
+
 using namespace dc;
 using GiNaC::ex;
 using GiNaC::numeric;
@@ -230,6 +235,28 @@ TEST_CASE("to_ginac: division by zero and poles are positioned errors", "[to_gin
   InputError l = conv_error("1 + log(0)");
   CHECK(l.pos().col == 5);
   CHECK(l.message() == "'log(0)' is undefined (a pole)");
+}
+
+// Regression (fuzz_expr, docs/hardening.md): GiNaC::pow(0, 0) and pow(0, -n) allocate a power
+// object and throw from its evaluation without freeing it, so every such input error leaked.
+// to_ginac now refuses them before calling GiNaC, with the same messages and positions. In the
+// sanitizer build (tools/sanitize.sh) LeakSanitizer checks on the spot that nothing leaked.
+TEST_CASE("to_ginac: 0^0 and 0^(negative) are input errors that build no GiNaC power", "[to_ginac][errors]") {
+  InputError a = conv_error("x + 0^0");
+  CHECK(a.pos().col == 5);
+  CHECK(a.length() == 3);
+  CHECK(a.message() == "0^0 is undefined");
+  CHECK(conv_error("(m1 - m1)^(1 - 1)").message() == "0^0 is undefined");
+  InputError b = conv_error("0^(-1/2)");
+  CHECK(b.pos().col == 1);
+  CHECK(b.message() == "division by zero in '0^(-1/2)'");
+  CHECK(conv_error("(x - x)^-2").message() == "division by zero in '(x - x)^-2'");
+  CHECK(conv("0^2").is_zero());
+  CHECK(conv("0^(1/2)").is_zero());
+  CHECK_NOTHROW(conv("0^k"));
+#ifdef DC_TEST_LSAN
+  CHECK(__lsan_do_recoverable_leak_check() == 0);
+#endif
 }
 
 TEST_CASE("dimension_of: consistent formulas", "[dimension]") {

@@ -1,6 +1,8 @@
 // compute_limit, first_order, series_first_order.
 #include <catch2/catch.hpp>
 
+#include <chrono>
+
 #include "derivations/core/limit.hpp"
 #include "derivations/core/prove.hpp"
 #include "derivations/limits/limits.hpp"
@@ -233,4 +235,28 @@ TEST_CASE("first_order and series_first_order", "[limit][series]") {
   auto s3 = series_first_order(GiNaC::sqrt(x), T.sym("x"), 0, &why);
   REQUIRE_FALSE(s3);
   REQUIRE(!why.empty());
+}
+
+// Regression (fuzz_expr, docs/hardening.md): the numeric confirmation substituted exact points
+// and GiNaC then evaluated exact powers such as (1 + 10^-8)^(10^8), or m1^(m1^12) with m1 = 10^8
+// and so on: compute_limit never returned. Such points now count as not evaluable, so these limits
+// are decided without hanging; ordinary powers are still confirmed numerically.
+TEST_CASE("limit: no exact power with an astronomical exponent is computed at a sample point", "[limit][hardening]") {
+  Fixture F;
+  ex m1 = F.T["m1"], m2 = F.T["m2"];
+  auto t0 = std::chrono::steady_clock::now();
+  LimitResult e = compute_limit(GiNaC::pow(1 + 1 / m2, m2), F.T.sym("m2"), 0, +1, F.T.t);
+  CAPTURE(e.reason);
+  REQUIRE(e.ok);   // (1 + 1/x)^x -> e: decided by the series, which was right all along
+  CHECK(F.equal(e.value, GiNaC::exp(ex(1))));
+  LimitResult r = compute_limit(GiNaC::pow(m1, GiNaC::pow(m1, 12)) / m2, F.T.sym("m2"), 0, +1, F.T.t);
+  CAPTURE(r.reason);
+  REQUIRE(r.ok);
+  CHECK(r.value.is_zero());
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  CHECK(seconds < 30);
+  LimitResult p = compute_limit(GiNaC::pow(m1 + m2, 20) / GiNaC::pow(m2, 20), F.T.sym("m2"), 0, +1, F.T.t);
+  REQUIRE(p.ok);
+  CHECK(F.equal(p.value, 1));
+  CHECK(p.confirmed_numerically);
 }

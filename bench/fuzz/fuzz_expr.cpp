@@ -1,0 +1,57 @@
+// libFuzzer harness: the expression parser (expr.hpp). The bytes are one relation as written in
+// a claim. Checked: parse_relation either returns a tree or throws InputError; the tree prints
+// (to_text), and the printed form parses again to the same text (the printer is what reports and
+// the LaTeX writer rely on); its identifiers are collected and, with every identifier a real
+// symbol (as for `derivcheck equal`), each side converts to GiNaC or fails with an InputError /
+// UndecidedLimit.
+#include <exception>
+#include <vector>
+
+#include "bench/fuzz/fuzz_common.hpp"
+#include "derivations/core/claims.hpp"
+#include "derivations/core/expr.hpp"
+#include "derivations/core/symbols.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > 4096) return 0;
+  const std::string text = dc_fuzz::bytes(data, size);
+  dc::Relation r;
+  try {
+    r = dc::parse_relation(text, dc::SourcePos{"<fuzz>", 1, 1});
+  } catch (const dc::InputError& e) {
+    dc_fuzz::touch(e);
+    return 0;
+  }
+  const std::string printed = dc::to_text(r);
+  // Round trip: the printed form is the author's tree with the parentheses it needs; reading it
+  // again gives the same text. It may nest deeper than the original (added parentheses), so the
+  // depth limits are relaxed for the second read.
+  dc::ParseLimits relaxed;
+  relaxed.max_depth = 1000;
+  relaxed.max_tree_depth = 20000;
+  relaxed.max_length = 1000000;
+  try {
+    dc::Relation again = dc::parse_relation(printed, dc::SourcePos{"<printed>", 1, 1}, relaxed);
+    if (dc::to_text(again) != printed) dc_fuzz::fail("to_text(parse(to_text(r))) != to_text(r)", printed, dc::to_text(again));
+  } catch (const dc::InputError& e) {
+    dc_fuzz::fail("to_text(r) does not parse", printed, e.format());
+  }
+  std::vector<const dc::Node*> ids;
+  for (const auto& side : r.sides) dc::collect_identifiers(side, ids);
+  dc::SymbolTable table;
+  try {
+    table = dc::claim_table(ids, {}, {}, dc::SourcePos{"<fuzz>", 1, 1});
+  } catch (const dc::InputError& e) {
+    dc_fuzz::touch(e);
+    return 0;
+  }
+  for (const auto& side : r.sides) {
+    try {
+      (void)dc::to_ginac(side, table);
+    } catch (const dc::InputError& e) {
+      dc_fuzz::touch(e);
+    } catch (const dc::UndecidedLimit&) {
+    }
+  }
+  return 0;
+}
