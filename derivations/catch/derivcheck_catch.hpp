@@ -1,28 +1,35 @@
 // Catch2 (v2) matchers for symbolic equality, decided by dc::prove_equal.
 //
-//   #include "derivations/catch/derivcheck_catch.hpp"
+//   #include <derivcheck/catch2.hpp>      // installed package: link derivcheck::catch2
+//   // (in this repository also "derivations/catch/derivcheck_catch.hpp")
 //   using dc::catch2::EqualsSymbolically;
 //
-//   GiNaC::symbol m1("m1"), m2("m2"), v1("v1");
-//   REQUIRE_THAT(lhs_ex, EqualsSymbolically(rhs_ex).assuming("m1>0, m2>0, e in [0,1]"));
+//   GiNaC::symbol k("k"), A("A");
+//   GiNaC::ex E = GiNaC::numeric(1, 2) * k * GiNaC::pow(A, 2);
+//   REQUIRE_THAT(E, EqualsSymbolically("1/2*k*A^2").assuming("k>0"));        // ex vs string
+//   REQUIRE_THAT(lhs_ex, EqualsSymbolically(rhs_ex).assuming("m1>0, e in [0,1]"));  // ex vs ex
 //   REQUIRE_THAT("limit((m1 - m2)*v1/(m1 + m2), m2, oo)", EqualsSymbolically("-v1").assuming("m1>0, m2>0"));
 //
-// Expressions are GiNaC::ex (symbols matched to the assumptions by name) or strings in the
-// derivation-file syntax (docs/format.md). Every symbol is real unless an assumption says
-// otherwise; assumption items are those of `derivcheck equal --assume`: `x>0`, `x>=0`, `x<0`,
-// `x real`, `x in [a,b]` (and open/half-open), relations such as `v1 > v2`.
-// On failure the description prints both sides deterministically (dc::print_text, never
-// GiNaC's process-dependent order), the verdict, and the counterexample point with both
-// values, or the residual and reason when undecided. A claim that only holds numerically
-// passes (the description states the points and digits).
+// Either side is a GiNaC::ex or a string in the derivation-file syntax (docs/format.md). The
+// names in the strings and in the assumptions are matched to the GiNaC symbols of the ex sides
+// by name (two different GiNaC symbols with the same name are an error). Every symbol is real
+// unless an assumption says otherwise; assumption items are those of `derivcheck equal
+// --assume`: `x>0`, `x>=0`, `x<0`, `x real`, `x in [a,b]` (and open/half-open), relations
+// such as `v1 > v2`.
+// On failure the description gives the right side (printed deterministically by
+// dc::print_text, never GiNaC's process-dependent order), the verdict, and once each the
+// counterexample point and both sides' values there, or the residual and reason when undecided;
+// Catch prints the left side before it. A claim that only holds numerically passes.
 //
-// Header-only; link against derivcheck_symbolic. Also makes Catch print GiNaC::ex with
-// dc::print_text.
+// Header-only; link derivcheck::catch2 (derivcheck_symbolic in this repository). Also makes
+// Catch print GiNaC::ex with dc::print_text.
 #pragma once
 #include <map>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <catch2/catch.hpp>
 #include <ginac/ginac.h>
@@ -52,15 +59,21 @@ namespace dc::catch2 {
 
 namespace detail {
 
+// Every GiNaC symbol of `e` by name; two different symbols with one name cannot be told apart
+// in the assumptions (or matched to a string), so they are an error.
 inline void collect_symbol_names(const GiNaC::ex& e, std::map<std::string, GiNaC::ex>& out) {
   if (GiNaC::is_a<GiNaC::symbol>(e)) {
-    out.emplace(GiNaC::ex_to<GiNaC::symbol>(e).get_name(), e);
+    const std::string& name = GiNaC::ex_to<GiNaC::symbol>(e).get_name();
+    auto [it, inserted] = out.emplace(name, e);
+    if (!inserted && !it->second.is_equal(e))
+      throw std::invalid_argument("two different GiNaC symbols are both named '" + name +
+                                  "'; the matcher matches symbols by name");
     return;
   }
   for (std::size_t i = 0; i < e.nops(); ++i) collect_symbol_names(e.op(i), out);
 }
 
-// The symbol table for a claim: every name in `names` (plus those the assumptions mention),
+// The symbol table for a claim: every name of `exprs` (plus those the assumptions mention),
 // with the domains and constraints of `assume`.
 inline SymbolTable table_for(const std::vector<const Node*>& exprs, const std::string& assume) {
   SourcePos where{"<assuming>", 1, 1};
@@ -75,144 +88,171 @@ inline SymbolTable table_for(const std::vector<const Node*>& exprs, const std::s
   return claim_table(exprs, domains, items, where);
 }
 
+inline bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The verdict and its evidence, each fact once: the prover's one-line `detail` restates the
+// counterexample ("differs at m1 = ..: lhs = .., rhs = ..") or the reason, so it is printed
+// only when it says something the structured fields do not.
 inline std::string verdict_description(const Verdict& v) {
   std::ostringstream os;
   os << "verdict: " << to_string(v.kind);
   if (!v.method.empty()) os << " (" << v.method << ")";
-  if (v.kind == VerdictKind::HoldsNumerically)
-    os << ", " << v.points << " points at " << v.digits << " digits" << (v.false_accept.empty() ? "" : ", false accept " + v.false_accept);
+  if (v.kind == VerdictKind::HoldsNumerically) {
+    os << ", " << v.points << " points at " << v.digits << " digits";
+    if (!v.false_accept.empty()) os << ", false accept " << v.false_accept;
+  }
+  std::string point;
+  for (std::size_t i = 0; i < v.point.size(); ++i)
+    point += (i ? ", " : "") + v.point[i].first + " = " + v.point[i].second;
+  const bool detail_repeats = v.detail.empty() || v.kind == VerdictKind::HoldsNumerically ||
+                              starts_with(v.detail, "differs at") || starts_with(v.detail, "the constants differ") ||
+                              v.detail == v.reason || v.detail == v.reason + "; residual: " + v.residual;
   if (v.kind == VerdictKind::Refuted) {
-    os << "\n  counterexample:";
-    for (std::size_t i = 0; i < v.point.size(); ++i)
-      os << (i ? ", " : " ") << v.point[i].first << " = " << v.point[i].second;
-    os << "\n  lhs = " << v.lhs_value << "\n  rhs = " << v.rhs_value;
+    // A side condition's detail ("not defined ...: x != 0 (divisor) fails at x = 0") names the point.
+    if (!point.empty() && (detail_repeats || v.detail.find(point) == std::string::npos))
+      os << "\n  counterexample: " << point;
+    if (!v.lhs_value.empty() || !v.rhs_value.empty()) os << "\n  lhs = " << v.lhs_value << "\n  rhs = " << v.rhs_value;
+    if (!v.hint.empty()) os << "\n  hint: " << v.hint;
   }
   if (v.kind == VerdictKind::Undecided) {
     if (!v.residual.empty()) os << "\n  residual: " << v.residual;
     if (!v.reason.empty()) os << "\n  reason: " << v.reason;
   }
-  if (!v.detail.empty()) os << "\n  " << v.detail;
+  if (!detail_repeats) os << "\n  " << v.detail;
   return os.str();
 }
 
-// What both matchers share: the claim's assumptions, the verdict, the printed sides.
+// What a match leaves for the description.
 struct Outcome {
   Verdict verdict;
-  std::string lhs_text, rhs_text;
-  std::string error;   // input error (malformed assumption, expression)
+  std::string rhs_text;  // the right side as printed (deterministic)
+  std::string error;     // input error (malformed assumption or expression, clashing names)
 };
 
-// Both sides printed deterministically, then the verdict of prove_equal: the one decision the
-// matchers share.
-inline bool decide(const GiNaC::ex& a, const GiNaC::ex& b, const SymbolTable& table, Outcome& out) {
-  out.lhs_text = print_text(a, table);
-  out.rhs_text = print_text(b, table);
-  out.verdict = prove_equal(a, b, table);
-  return out.verdict.holds();
+// One side of a claim: a GiNaC expression or a string in the derivation-file syntax.
+struct Side {
+  bool is_text = false;
+  GiNaC::ex ex;
+  std::string text;
+};
+
+// Both sides in one symbol table (names matched), then prove_equal: the one decision all
+// overloads share. Input errors end up in out.error, never as an exception.
+inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, Outcome& out) {
+  try {
+    std::map<std::string, GiNaC::ex> syms;
+    for (const Side* s : {&lhs, &rhs})
+      if (!s->is_text) collect_symbol_names(s->ex, syms);
+    std::vector<Node> nodes;   // the ex sides' symbols, as identifiers
+    nodes.reserve(syms.size() + 2);
+    for (const auto& [name, sym] : syms) {
+      if (is_reserved_name(name))
+        throw std::invalid_argument("a GiNaC symbol is named '" + name + "', a reserved name of the derivation syntax");
+      Node n;
+      n.kind = NodeKind::Symbol;
+      n.text = name;
+      nodes.push_back(std::move(n));
+    }
+    if (lhs.is_text) nodes.push_back(parse_expression(lhs.text, SourcePos{"<lhs>", 1, 1}));
+    if (rhs.is_text) nodes.push_back(parse_expression(rhs.text, SourcePos{"<rhs>", 1, 1}));
+    std::vector<const Node*> ptrs;
+    for (const auto& n : nodes) ptrs.push_back(&n);
+    SymbolTable table = table_for(ptrs, assume);
+    GiNaC::exmap to_table;
+    for (const auto& [name, sym] : syms)
+      if (const SymbolInfo* info = table.find(name)) to_table[sym] = info->sym;
+    const Node* text_node = nodes.data() + syms.size();
+    GiNaC::ex l = lhs.is_text ? to_ginac(*text_node++, table) : lhs.ex.subs(to_table);
+    GiNaC::ex r = rhs.is_text ? to_ginac(*text_node, table) : rhs.ex.subs(to_table);
+    out.rhs_text = print_text(r, table);
+    out.verdict = prove_equal(l, r, table);
+    return out.verdict.holds();
+  } catch (const InputError& e) {
+    out.error = e.format();
+  } catch (const std::exception& e) {
+    out.error = e.what();
+  }
+  return false;
 }
 
 }  // namespace detail
 
-// lhs (GiNaC::ex) == rhs, decided by prove_equal under the assumptions.
-class EqualsSymbolicallyEx : public Catch::MatcherBase<GiNaC::ex> {
+// lhs == rhs, decided by prove_equal under the assumptions. lhs and rhs are each a GiNaC::ex
+// (or anything convertible: a symbol, a number) or a string in the derivation-file syntax.
+// A MatcherBase<GiNaC::ex>, so it composes with && || ! for expression arguments.
+class EqualsSymbolicallyMatcher : public Catch::MatcherBase<GiNaC::ex> {
  public:
-  explicit EqualsSymbolicallyEx(GiNaC::ex rhs, std::string assume = {}) : rhs_(std::move(rhs)), assume_(std::move(assume)) {}
-  EqualsSymbolicallyEx assuming(std::string assumptions) const { return EqualsSymbolicallyEx(rhs_, std::move(assumptions)); }
+  explicit EqualsSymbolicallyMatcher(const GiNaC::ex& rhs, std::string assume = {}) : assume_(std::move(assume)) {
+    rhs_.ex = rhs;
+  }
+  explicit EqualsSymbolicallyMatcher(std::string rhs, std::string assume = {}) : assume_(std::move(assume)) {
+    rhs_.is_text = true;
+    rhs_.text = std::move(rhs);
+  }
+  // The assumption list (replaces an earlier one): "k>0, e in [0,1], v1 > v2".
+  EqualsSymbolicallyMatcher assuming(std::string assumptions) const {
+    EqualsSymbolicallyMatcher m(*this);
+    m.assume_ = std::move(assumptions);
+    m.out_.reset();
+    return m;
+  }
 
   bool match(const GiNaC::ex& lhs) const override {
-    out_ = std::make_shared<detail::Outcome>();
-    try {
-      std::map<std::string, GiNaC::ex> syms;
-      detail::collect_symbol_names(lhs, syms);
-      detail::collect_symbol_names(rhs_, syms);
-      std::vector<Node> nodes;
-      for (const auto& [name, s] : syms) {
-        Node n;
-        n.kind = NodeKind::Symbol;
-        n.text = name;
-        nodes.push_back(n);
-      }
-      std::vector<const Node*> ptrs;
-      for (const auto& n : nodes) ptrs.push_back(&n);
-      SymbolTable table = detail::table_for(ptrs, assume_);
-      GiNaC::exmap to_table;
-      for (const auto& [name, s] : syms)
-        if (const SymbolInfo* info = table.find(name)) to_table[s] = info->sym;
-      return detail::decide(lhs.subs(to_table), rhs_.subs(to_table), table, *out_);
-    } catch (const InputError& e) {
-      out_->error = e.format();
-    } catch (const std::exception& e) {
-      out_->error = e.what();
-    }
-    return false;
+    detail::Side l;
+    l.ex = lhs;
+    return run(l);
   }
+  bool match(const std::string& lhs) const {
+    detail::Side l;
+    l.is_text = true;
+    l.text = lhs;
+    return run(l);
+  }
+  bool match(const char* lhs) const { return match(std::string(lhs)); }
 
+  // Catch shows "<lhs> " + this: the right side, the assumptions, then after a match the
+  // verdict and its evidence (each once).
   std::string describe() const override {
     std::ostringstream os;
-    if (out_ && !out_->error.empty()) {
-      os << "equals symbolically (not decided: " << out_->error << ")";
-      return os.str();
-    }
-    os << "equals symbolically " << (out_ ? out_->rhs_text : Catch::StringMaker<GiNaC::ex>::convert(rhs_));
+    os << "equals symbolically ";
+    if (out_ && out_->error.empty()) os << out_->rhs_text;
+    else if (rhs_.is_text) os << rhs_.text;
+    else os << Catch::StringMaker<GiNaC::ex>::convert(rhs_.ex);
     if (!assume_.empty()) os << " assuming " << assume_;
-    if (out_) os << "\n  lhs: " << out_->lhs_text << "\n  rhs: " << out_->rhs_text << "\n  "
-                 << detail::verdict_description(out_->verdict);
+    if (!out_) return os.str();
+    if (!out_->error.empty()) os << " (not decided: " << out_->error << ")";
+    else os << "\n  " << detail::verdict_description(out_->verdict);
     return os.str();
   }
+  // Catch's MatcherBase caches its first description; this one is stateful (the last match),
+  // so it describes afresh (a matcher reused in two assertions describes the second).
+  std::string toString() const { return describe(); }
 
-  // The verdict of the last match (for tests that inspect the evidence).
+  // The verdict of the last match (for tests that inspect the evidence), or null after an
+  // input error or before any match.
   const Verdict* verdict() const { return out_ && out_->error.empty() ? &out_->verdict : nullptr; }
 
  private:
-  GiNaC::ex rhs_;
-  std::string assume_;
-  mutable std::shared_ptr<detail::Outcome> out_;
-};
-
-// lhs (an expression in the derivation-file syntax) == rhs (same syntax).
-class EqualsSymbolicallyText : public Catch::MatcherBase<std::string> {
- public:
-  explicit EqualsSymbolicallyText(std::string rhs, std::string assume = {}) : rhs_(std::move(rhs)), assume_(std::move(assume)) {}
-  EqualsSymbolicallyText assuming(std::string assumptions) const { return EqualsSymbolicallyText(rhs_, std::move(assumptions)); }
-
-  bool match(const std::string& lhs) const override {
+  bool run(const detail::Side& lhs) const {
     out_ = std::make_shared<detail::Outcome>();
-    try {
-      Node l = parse_expression(lhs, SourcePos{"<lhs>", 1, 1});
-      Node r = parse_expression(rhs_, SourcePos{"<rhs>", 1, 1});
-      SymbolTable table = detail::table_for({&l, &r}, assume_);
-      return detail::decide(to_ginac(l, table), to_ginac(r, table), table, *out_);
-    } catch (const InputError& e) {
-      out_->error = e.format();
-    } catch (const std::exception& e) {
-      out_->error = e.what();
-    }
-    return false;
+    return detail::decide(lhs, rhs_, assume_, *out_);
   }
 
-  std::string describe() const override {
-    std::ostringstream os;
-    if (out_ && !out_->error.empty()) {
-      os << "equals symbolically " << rhs_ << " (not decided: " << out_->error << ")";
-      return os.str();
-    }
-    os << "equals symbolically " << rhs_;
-    if (!assume_.empty()) os << " assuming " << assume_;
-    if (out_) os << "\n  lhs: " << out_->lhs_text << "\n  rhs: " << out_->rhs_text << "\n  "
-                 << detail::verdict_description(out_->verdict);
-    return os.str();
-  }
-
-  const Verdict* verdict() const { return out_ && out_->error.empty() ? &out_->verdict : nullptr; }
-
- private:
-  std::string rhs_;
+  detail::Side rhs_;
   std::string assume_;
+  // Shared with the copy Catch keeps (it matches with the original, describes with the copy).
   mutable std::shared_ptr<detail::Outcome> out_;
 };
 
-inline EqualsSymbolicallyEx EqualsSymbolically(const GiNaC::ex& rhs) { return EqualsSymbolicallyEx(rhs); }
-inline EqualsSymbolicallyText EqualsSymbolically(const std::string& rhs) { return EqualsSymbolicallyText(rhs); }
-inline EqualsSymbolicallyText EqualsSymbolically(const char* rhs) { return EqualsSymbolicallyText(rhs); }
+// Earlier names of the one matcher type.
+using EqualsSymbolicallyEx = EqualsSymbolicallyMatcher;
+using EqualsSymbolicallyText = EqualsSymbolicallyMatcher;
+
+inline EqualsSymbolicallyMatcher EqualsSymbolically(const GiNaC::ex& rhs) { return EqualsSymbolicallyMatcher(rhs); }
+inline EqualsSymbolicallyMatcher EqualsSymbolically(const std::string& rhs) { return EqualsSymbolicallyMatcher(rhs); }
+inline EqualsSymbolicallyMatcher EqualsSymbolically(const char* rhs) { return EqualsSymbolicallyMatcher(std::string(rhs)); }
+// A number (EqualsSymbolically(0): the literal 0 would otherwise be taken for a null const char*).
+template <class T, std::enable_if_t<std::is_arithmetic_v<T>, int> = 0>
+EqualsSymbolicallyMatcher EqualsSymbolically(T rhs) { return EqualsSymbolicallyMatcher(GiNaC::ex(rhs)); }
 
 }  // namespace dc::catch2

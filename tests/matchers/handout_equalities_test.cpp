@@ -63,7 +63,7 @@ TEST_CASE("matchers: a wrong claim fails with a counterexample and both sides", 
   CHECK_THAT(d, Catch::Contains("refuted"));
   CHECK_THAT(d, Catch::Contains("counterexample:"));
   CHECK_THAT(d, Catch::Contains("lhs = "));
-  CHECK_THAT(d, Catch::Contains("rhs: (2*m2*v2 + v1*(m1 + m2))/(m1 + m2)"));
+  CHECK_THAT(d, Catch::StartsWith("equals symbolically (2*m2*v2 + v1*(m1 + m2))/(m1 + m2) assuming m1>0, m2>0\n"));
   // the description is deterministic: the same text for a second, independent match
   auto m2 = EqualsSymbolically(wrong).assuming("m1>0, m2>0");
   CHECK_FALSE(m2.match(s.v1p_general.subs(s.e == 1)));
