@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include <cln/float.h>
 #include <cln/integer.h>
 #include <cln/rational.h>
 #include <cln/real.h>
@@ -247,11 +248,20 @@ std::string format_number(const numeric& x_in, int sig) {
   }
   if (x_in.is_zero()) return "0";
   numeric r;
+  long long shift = 0;  // the value is r * 10^shift
   if (x_in.is_rational()) {
     r = x_in;
   } else {
-    cln::cl_R cr = cln::the<cln::cl_R>(x_in.to_cl_N());
-    r = numeric(cln::cl_N(cln::rational(cr)));
+    cln::cl_F f = cln::the<cln::cl_F>(cln::the<cln::cl_R>(x_in.to_cl_N()));
+    // A float far outside 10^-1200..10^1200 (a value that overflowed to 10^(10^18) in the probe)
+    // is first scaled by a power of ten in float arithmetic: its exact rational would have as
+    // many digits as its exponent (an allocation of petabytes, found by fuzz_expr).
+    const long long fe = cln::float_exponent(f);
+    if (fe > 4096 || fe < -4096) {
+      shift = static_cast<long long>(std::floor(static_cast<double>(fe - 1) * 0.30102999566398119521));
+      f = f / cln::expt(cln::cl_float(10, f), cln::cl_I(shift));
+    }
+    r = numeric(cln::cl_N(cln::rational(f)));
   }
   bool neg = r.is_negative();
   r = GiNaC::abs(r);
@@ -272,6 +282,11 @@ std::string format_number(const numeric& x_in, int sig) {
   std::string digits = os.str();
   while (digits.size() > 1 && digits.back() == '0') digits.pop_back();
   std::string out = neg ? "-" : "";
+  if (shift != 0) {
+    out += digits.substr(0, 1);
+    if (digits.size() > 1) out += "." + digits.substr(1);
+    return out + "e" + std::to_string(shift + e10);
+  }
   if (e10 >= -5 && e10 < 21) {
     if (e10 >= 0) {
       std::string ip = digits.substr(0, std::min<std::size_t>(digits.size(), e10 + 1));

@@ -5,6 +5,7 @@
 
 #include "derivations/core/limit.hpp"
 #include "derivations/core/prove.hpp"
+#include "derivations/core/prove_detail.hpp"
 #include "derivations/limits/limits.hpp"
 #include "support.hpp"
 
@@ -259,4 +260,19 @@ TEST_CASE("limit: no exact power with an astronomical exponent is computed at a 
   REQUIRE(p.ok);
   CHECK(F.equal(p.value, 1));
   CHECK(p.confirmed_numerically);
+}
+
+// Regression (fuzz_expr, docs/hardening.md): the numeric confirmation reported a relative distance
+// that had overflowed to about 10^(10^18) with format_number, which turned the float into an exact
+// rational first (an allocation of petabytes). Such floats are now scaled by a power of ten in
+// float arithmetic before they are printed.
+TEST_CASE("format_number: floats with astronomically large or small exponents", "[limit][hardening]") {
+  dc::DigitsGuard g(50);
+  auto huge = [](long k) { return GiNaC::ex_to<GiNaC::numeric>(GiNaC::exp(ex(GiNaC::numeric(k))).evalf()); };
+  CHECK(dc::detail::format_number(huge(690), 6) == "4.60461e299");
+  CHECK(dc::detail::format_number(huge(230000), 6) == "5.38069e99887");
+  CHECK(dc::detail::format_number(huge(2300000000000000000L), 6) == "3.9591e998877308377479203");
+  CHECK(dc::detail::format_number(-huge(2300000000L), 4) == "-2.385e998877308");
+  CHECK(dc::detail::format_number(GiNaC::numeric(1) / huge(230000), 6) == "1.8585e-99888");
+  CHECK(dc::detail::format_number(GiNaC::numeric(5, 2)) == "2.5");
 }
