@@ -53,6 +53,7 @@ GiNaC::ex constant_value(const Node& n) {
                          n.args[1].length);
       if (b.is_zero() && GiNaC::ex_to<GiNaC::numeric>(e).is_negative())
         throw InputError(n.op_pos, "division by zero in an interval bound");
+      if (b.is_zero() && e.is_zero()) throw InputError(n.pos, "0^0 is undefined in an interval bound", n.length);
       return GiNaC::pow(b, e);
     }
     case NodeKind::Call:
