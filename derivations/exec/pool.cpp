@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <deque>
 #include <iostream>
 #include <map>
 #include <new>
@@ -330,9 +331,11 @@ struct Pool::Impl {
   }
 
   void run(const std::function<bool(std::string&)>& next, const std::function<void(Outcome&&)>& done, std::size_t window) {
-    if (window == 0) window = 64 * static_cast<std::size_t>(jobs);
+    if (window == 0) window = 2048 * static_cast<std::size_t>(jobs);
     std::map<std::size_t, Outcome> ready;
     std::size_t next_index = 0, next_emit = 0;
+    std::deque<std::size_t> task_bytes;   // sizes of the tasks next_emit .. next_index - 1
+    std::size_t window_bytes = 0;
     bool more = true;
     auto finish = [&](Worker& w, Outcome o) {
       o.seconds = std::chrono::duration<double>(Clock::now() - w.start).count();
@@ -345,12 +348,15 @@ struct Pool::Impl {
         if (w.busy) continue;
         std::size_t index;
         std::string task;
-        if (more && next_index - next_emit < window) {
+        bool room = next_index == next_emit || (next_index - next_emit < window && window_bytes < Pool::kWindowBytes);
+        if (more && room) {
           if (!next(task)) {
             more = false;
             continue;
           }
           index = next_index++;
+          task_bytes.push_back(task.size());
+          window_bytes += task.size();
         } else {
           continue;
         }
@@ -373,6 +379,8 @@ struct Pool::Impl {
         done(std::move(ready.begin()->second));
         ready.erase(ready.begin());
         ++next_emit;
+        window_bytes -= task_bytes.front();
+        task_bytes.pop_front();
       }
       std::vector<pollfd> fds;
       std::vector<Worker*> polled;

@@ -36,14 +36,19 @@ using Handler = std::function<std::string(const std::string& task)>;
 
 class Pool {
  public:
+  static constexpr std::size_t kWindowBytes = std::size_t{64} << 20;
+
   Pool(int jobs, Budget budget, Handler handler);
   ~Pool();
   Pool(const Pool&) = delete;
   Pool& operator=(const Pool&) = delete;
 
   // Runs tasks until `next` returns false. `done` is called once per task, in task order.
-  // At most `window` tasks are dispatched but not yet delivered (0: 64 per worker), so memory
-  // stays bounded however many tasks stream through.
+  // At most `window` tasks (0: 2048 per worker) holding at most kWindowBytes of task text are
+  // dispatched but not yet delivered, so memory stays bounded however many tasks stream through.
+  // The window must be wide: results are delivered in order, so while one slow task runs the
+  // other workers go on only as far as the window reaches (64 per worker cost a third of the
+  // throughput at 2 jobs on a generated bank; docs/performance.md, "Claim banks").
   void run(const std::function<bool(std::string& task)>& next, const std::function<void(Outcome&&)>& done,
            std::size_t window = 0);
 
