@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # One command: build the libFuzzer harnesses (bench/fuzz) and run them.
 #   tools/fuzz.sh [TARGET|all] [RUNS] [extra libFuzzer flags...]
-#     TARGET  dc_file | expr | assume | assume_sat | claims | all (default all)
+#     TARGET  reader | parse | dc_file | expr | assume | assume_sat | claims | all (default all)
+#             (reader, parse: the .dc reader and the expression parser alone, thousands of inputs
+#             per second; the others go on into GiNaC and the checker, 10-300 per second)
 #     RUNS    executions per target (default 1000000; -1 = until stopped or a crash)
 #   e.g. tools/fuzz.sh expr 2000000       tools/fuzz.sh claims 200000 -max_total_time=3600
 #   SESSION=N: executions per fuzzer process (default 250000; see below), JOBS=N: build jobs
@@ -20,7 +22,7 @@ runs="${2:-1000000}"
 shift $(( $# > 2 ? 2 : $# ))
 cd "$root"
 
-all_targets=(dc_file expr assume assume_sat claims)
+all_targets=(reader parse dc_file expr assume assume_sat claims)
 if [ "$target" = all ]; then targets=("${all_targets[@]}"); else targets=("$target"); fi
 for t in "${targets[@]}"; do
   [ -f "bench/fuzz/fuzz_$t.cpp" ] || { echo "fuzz.sh: unknown target '$t' (one of ${all_targets[*]}, all)" >&2; exit 2; }
@@ -31,8 +33,10 @@ CC=clang-14 CXX=clang++-14 nice -n 10 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=
   -DDERIVCHECK_FUZZ=ON -DDERIVCHECK_TESTS=OFF -DDERIVCHECK_BENCH=OFF >/dev/null
 nice -n 10 cmake --build "$build" -j"$jobs" --target $(printf 'fuzz_%s ' "${targets[@]}")
 
-# --- seeds from the repository (regenerated every run; the grown corpus is kept) ---------
-seeds="$build/seeds"
+# --- seeds from the repository (regenerated every run, in a directory of this run's own so
+# that runs of different targets can go on side by side; the grown corpus is kept) --------
+seeds="$build/seeds.$$"
+trap 'rm -rf "$seeds"' EXIT
 rm -rf "$seeds"
 python3 - "$root" "$seeds" <<'PY'
 import glob, hashlib, json, os, sys
@@ -70,22 +74,24 @@ for s in ["m1>0, v1 real, e in [0,1], v1 > v2", "x >= 0", "theta in (0, pi/2)", 
     put("assume", s)
 import shutil
 shutil.copytree(os.path.join(out, "assume"), os.path.join(out, "assume_sat"))
+shutil.copytree(os.path.join(out, "dc_file"), os.path.join(out, "reader"))
+shutil.copytree(os.path.join(out, "expr"), os.path.join(out, "parse"))
 PY
 
 # --- per-target libFuzzer settings ----------------------------------------------------------
-declare -A max_len=([dc_file]=8192 [expr]=512 [assume]=256 [assume_sat]=256 [claims]=1024)
+declare -A max_len=([reader]=8192 [parse]=512 [dc_file]=8192 [expr]=512 [assume]=256 [assume_sat]=256 [claims]=1024)
 # A hang is an input slower than the timeout, 600 s: under ASan+UBSan with coverage, at nice 10 on
 # a shared machine, GiNaC/CLN-heavy inputs run up to ~100x slower than in a Release build (inputs
 # of 1-3 s there passed 120 s here). Inputs slower than 10 s are kept as slow-unit-* artifacts and
 # listed, not failures; docs/hardening.md times them in a Release build.
-declare -A timeout=([dc_file]=600 [expr]=600 [assume]=600 [assume_sat]=600 [claims]=600)
-declare -A dict=([dc_file]=dc.dict [expr]=dc.dict [assume]=assume.dict [assume_sat]=assume.dict [claims]=claims.dict)
+declare -A timeout=([reader]=60 [parse]=60 [dc_file]=600 [expr]=600 [assume]=600 [assume_sat]=600 [claims]=600)
+declare -A dict=([reader]=dc.dict [parse]=dc.dict [dc_file]=dc.dict [expr]=dc.dict [assume]=assume.dict [assume_sat]=assume.dict [claims]=claims.dict)
 # Leak checks inside the loop are off: libFuzzer runs LeakSanitizer after every input whose
 # mallocs and frees do not balance, and GiNaC's own leaks on exceptions (tools/lsan.supp)
 # unbalance most inputs, so the whole process is scanned after each of them: 3-4x slower, and
 # slower still as the process grows. Instead every target's whole corpus is replayed once with
 # leak checks on at the end (and tools/sanitize.sh runs the test suite with leak checks).
-declare -A leaks=([dc_file]=0 [expr]=0 [assume]=0 [assume_sat]=0 [claims]=0)
+declare -A leaks=([reader]=0 [parse]=1 [dc_file]=0 [expr]=0 [assume]=0 [assume_sat]=0 [claims]=0)
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:symbolize=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
