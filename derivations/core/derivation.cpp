@@ -618,7 +618,8 @@ class Reader {
     if (step.erratum) {
       for (const auto& side : step.erratum->corrected.sides) validate(side);
     } else {
-      for (const auto& side : step.claim.sides) validate_side(side);
+      for (const auto& side : step.claim.sides)
+        if (!limit_value_side(step, side, d_.symbols)) validate_side(side);
     }
     defined_[step.label] = d_.steps.size();
     d_.steps.push_back(std::move(step));
@@ -873,8 +874,23 @@ class Reader {
       const Group& g = require("->");
       auto pit = items(s, g);
       if (pit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one point after '->' (a value, oo or -oo)" + usage(r));
-      spec.point = value_arg(s, pit[0].first, pit[0].second);
-      spec.into = labels(s, require("of"), "the label of the step to take the " + r + " of", 1);
+      // A one-sided approach: `-> 0+` (from above), `-> a-` (from below).
+      std::size_t pe = pit[0].second;
+      if (pe > pit[0].first + 1 && (s.text[pe - 1] == '+' || s.text[pe - 1] == '-')) {
+        spec.dir = s.text[pe - 1] == '+' ? 1 : -1;
+        --pe;
+        std::size_t pb = pit[0].first;
+        trim_range(s.text, pb, pe);
+      }
+      spec.point = value_arg(s, pit[0].first, pe);
+      if (spec.dir != 0 && (spec.point->value.kind == NodeKind::Symbol || spec.point->value.kind == NodeKind::Neg)) {
+        const Node& v = spec.point->value.kind == NodeKind::Neg ? spec.point->value.args[0] : spec.point->value;
+        if (v.kind == NodeKind::Symbol && v.text == "oo")
+          fail(s.at(pe), "a direction ('+' or '-') goes with a finite point; 'oo' and '-oo' are approached from one side already",
+               1);
+      }
+      // `of A`: the expression of step A (its last side); without it, the claim's own first side.
+      if (group("of")) spec.into = labels(s, *group("of"), "the label of the step to take the " + r + " of", 1);
     } else if (r == "first_order") {
       if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the small quantities" + usage(r));
       for (auto& it : pre_items) spec.smalls.push_back(symbol_arg(s, it.first, it.second));
@@ -912,8 +928,8 @@ class Reader {
         {"rewrite", "by rewrite [A, B, ...] [with x = value, ...]"},
         {"substitute", "by substitute S1, S2, ... into C"},
         {"solve", "by solve A, B, ... for x, y, ..."},
-        {"limit", "by limit x -> POINT of A [with y = value, ...]"},
-        {"series", "by series x -> POINT of A"},
+        {"limit", "by limit x -> POINT[+|-] [of A] [with y = value, ...]"},
+        {"series", "by series x -> POINT [of A]"},
         {"first_order", "by first_order d1, d2 of A"},
         {"differentiate", "by differentiate A wrt t"},
         {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]"},
@@ -1169,6 +1185,17 @@ std::optional<InputError> erratum_error(const Derivation& d, const Step& s) {
     return e;
   }
   return std::nullopt;
+}
+
+bool limit_value_word(const Node& n, const SymbolTable& symbols) {
+  const Node& v = n.kind == NodeKind::Neg ? n.args[0] : n;
+  if (v.kind != NodeKind::Symbol) return false;
+  if (v.text == "oo") return true;
+  return n.kind == NodeKind::Symbol && v.text == "undefined" && !symbols.find("undefined");
+}
+
+bool limit_value_side(const Step& s, const Node& side, const SymbolTable& symbols) {
+  return s.rule.name == "limit" && limit_value_word(side, symbols);
 }
 
 std::vector<GiNaC::ex> claim_sides(const Derivation& d, const Step& s) {

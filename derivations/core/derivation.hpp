@@ -36,6 +36,7 @@ struct RuleSpec {
   std::vector<RuleArg> with;     // `with x = value, y(0) = value`
   std::optional<RuleArg> var;    // `limit x -> p` / `series x -> p` / `wrt t`
   std::optional<RuleArg> point;  // `-> p`, `from T0`
+  int dir = 0;                   // `-> p+` (+1, from above), `-> p-` (-1, from below), else 0
   std::vector<RuleArg> smalls;   // `first_order d1, d2 of A`
   SourcePos pos;
   std::string text;
@@ -88,6 +89,12 @@ struct Derivation {
 // checker to report (see Step::erratum) and the corrected claim is used.
 Derivation load_derivation(const std::string& path);
 Derivation parse_derivation(SourceText source);
+
+// A whole side of a `by limit` claim that states what no expression can: `oo`, `-oo`, or
+// `undefined` (the limit does not exist; a declared symbol of that name keeps its meaning).
+// Such a side has no dimension, side conditions or GiNaC form; the limit rule reads it.
+bool limit_value_word(const Node& side, const SymbolTable& symbols);
+bool limit_value_side(const Step& s, const Node& side, const SymbolTable& symbols);
 
 // For an erratum step: the InputError the printed claim raises (nullopt if none).
 std::optional<InputError> erratum_error(const Derivation& d, const Step& s);

@@ -67,6 +67,7 @@ class Writer {
     if (name == "pi") return "\\pi";
     if (name == "oo") return "\\infty";
     if (const SymbolInfo* s = table_.find(name)) return s->tex.empty() ? default_tex_name(name) : s->tex;
+    if (name == "undefined") return "\\text{undefined}";   // a limit that does not exist
     return default_tex_name(name);
   }
 
@@ -218,11 +219,13 @@ class Writer {
         return frac("\\mathrm{d}" + order + " " + ftex, "\\mathrm{d} " + v + order);
       return frac("\\mathrm{d}" + order, "\\mathrm{d} " + v + order) + "\\left(" + top(n.args[0]) + "\\right)";
     }
-    if (f == "limit" && n.args.size() == 3) {
+    if (f == "limit" && (n.args.size() == 3 || n.args.size() == 4)) {
+      // A fourth argument (only from displayed_claim) is the side: the Symbol "+" or "-".
       const Node& g = n.args[0];
       bool need = !(is_atom(g) || g.kind == NodeKind::Div || g.kind == NodeKind::Pow ||
                     (g.kind == NodeKind::Call && !is_call(g, "limit") && !is_call(g, "integral")));
-      return "\\lim_{" + top(n.args[1]) + " \\to " + top(n.args[2]) + "} " + operand(g, need);
+      std::string side = n.args.size() == 4 ? "^{" + n.args[3].text + "}" : "";
+      return "\\lim_{" + top(n.args[1]) + " \\to " + top(n.args[2]) + side + "} " + operand(g, need);
     }
     if (f == "integral" && n.args.size() == 4) {
       const Node& g = n.args[0];
@@ -313,6 +316,29 @@ std::string hex4(std::uint32_t cp) {
   return s;
 }
 
+// What the handout shows for a step: a `by limit x -> p` step without `of` states
+// "f = L" meaning "f -> L as x -> p", so its first side is shown as the limit it means.
+Relation displayed_claim(const Step& s, const Relation& claim) {
+  if (s.rule.name != "limit" || !s.rule.into.empty() || claim.sides.size() < 2 || !s.rule.var || !s.rule.point)
+    return claim;
+  const Node& f = claim.sides[0];
+  if (f.kind == NodeKind::Call && f.text == "limit") return claim;
+  Relation shown = claim;
+  Node lim;
+  lim.kind = NodeKind::Call;
+  lim.text = "limit";
+  lim.pos = f.pos;
+  lim.args = {f, s.rule.var->value, s.rule.point->value};
+  if (s.rule.dir != 0) {
+    Node side;
+    side.kind = NodeKind::Symbol;
+    side.text = s.rule.dir > 0 ? "+" : "-";
+    lim.args.push_back(side);
+  }
+  shown.sides[0] = std::move(lim);
+  return shown;
+}
+
 std::string verdict_text(const StepResult& r) {
   if (r.premise && r.verdict.holds()) return "$\\bullet$ premise";
   std::string s;
@@ -350,7 +376,7 @@ class DocumentWriter {
       out += "\\begin{gather}\n";
       for (std::size_t i = 0; i < run.size(); ++i) {
         const Step& s = *run[i];
-        const Relation& claim = s.claim;
+        const Relation claim = displayed_claim(s, s.claim);
         out += "% " + s.label + " (" + file + ":" + std::to_string(s.pos.line) + ")\n";
         if (latex_prefers_aligned(claim, d.symbols))
           out += "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}";
@@ -379,7 +405,7 @@ class DocumentWriter {
 
   std::string step(const Derivation& d, const Step& s, const StepResult* r) {
     std::string out;
-    const Relation& claim = s.erratum ? s.erratum->corrected : s.claim;
+    const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
     out += "% " + s.label + " (" + basename_of(d.source.name) + ":" + std::to_string(s.pos.line) + ")\n";
     if (opt_.annotate) {
       std::string note = "\\texttt{" + latex_escape_text(s.label) + "}: by " + latex_escape_text(rule_text(s));

@@ -18,10 +18,11 @@ using rules::positioned;
 using rules::with_line;
 
 // Dimension of every side; a mismatch is an error at the claim with both dimensions.
-void check_dimensions(const Derivation& d, const Relation& claim, StepResult& res) {
+void check_dimensions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
   std::vector<Dimension> dims;
   std::vector<const Node*> nodes;
   for (const auto& side : claim.sides) {
+    if (limit_value_side(s, side, d.symbols)) continue;   // oo, -oo, undefined
     // A literal 0 has every dimension (`m_p*v_p - m_c*v_c = 0`).
     const Node* z = &side;
     while (z->kind == NodeKind::Neg) z = &z->args[0];
@@ -75,10 +76,38 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
 }
 
 // Side conditions of the claim's sides (an integral's own variable and bounds excluded).
-void add_claim_side_conditions(const Derivation& d, const Relation& claim, StepResult& res) {
+void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
   try {
-    for (const auto& side : claim.sides) {
+    // `f = L  by limit x -> p` (no `of`): f is only looked at near p, so the conditions of f's
+    // parts that involve x (log(x) in x*log(x) as x -> 0+) are not claims about x's domain;
+    // the conditions of parts free of x are.
+    const bool own_operand = s.rule.name == "limit" && s.rule.into.empty() && s.rule.var && claim.sides.size() >= 2;
+    for (std::size_t si = 0; si < claim.sides.size(); ++si) {
+      const Node& side = claim.sides[si];
+      if (limit_value_side(s, side, d.symbols)) continue;
       Node n = resolve_definitions(d, side);
+      if (own_operand && si == 0) {
+        const std::string& x = s.rule.var->label;
+        std::function<bool(const Node&)> mentions = [&](const Node& m) {
+          if (m.kind == NodeKind::Symbol && m.text == x) return true;
+          for (const auto& a : m.args)
+            if (mentions(a)) return true;
+          return false;
+        };
+        std::function<void(const Node&)> free_parts = [&](const Node& m) {
+          if (!mentions(m)) {
+            for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
+              bool dup = false;
+              for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
+              if (!dup) res.verdict.side_conditions.push_back(sc);
+            }
+            return;
+          }
+          for (const auto& a : m.args) free_parts(a);
+        };
+        free_parts(n);
+        continue;
+      }
       std::function<void(const Node&)> walk = [&](const Node& m) {
         if (m.kind == NodeKind::Call && m.text == "integral") {
           for (const auto& a : m.args) walk(a);
@@ -134,9 +163,9 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   res.step = &s;
   const Relation& claim = s.erratum ? s.erratum->corrected : s.claim;
   if (s.erratum) check_erratum(d, s, opt, res);
-  check_dimensions(d, claim, res);
+  check_dimensions(d, s, claim, res);
   res.verdict = rules::run_rule(d, s, claim, opt, res);
-  add_claim_side_conditions(d, claim, res);
+  add_claim_side_conditions(d, s, claim, res);
   // A claim must hold on the whole declared domain (premises only warn).
   if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
   if (s.stable_of) check_stable_form(d, s, opt, res);

@@ -1,6 +1,8 @@
-// `by limit x -> p of A [with ...]`, `by series x -> p of A` and `by first_order d1, d2 of A`:
-// the referenced expression's limit, first-order series or first-order part is derived with
-// the limit helper (derivations/core/limit.hpp), and the claim must equal it.
+// `by limit x -> p[+|-] [of A] [with ...]`, `by series x -> p [of A]` and
+// `by first_order d1, d2 of A`: the limit, first-order series or first-order part of A's
+// expression (or, without `of`, of the claim's first side) is derived with the limit helper
+// (derivations/core/limit.hpp), and the claim must equal it. A limit side may be `oo`, `-oo` or
+// `undefined` (the limit does not exist: one-sided limits differ, oscillation, no real value).
 #include "derivations/core/limit.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
@@ -16,33 +18,88 @@ bool is_infinity(const Node& n, int& sign) {
   return false;
 }
 
+// `limit(g, x, p)` written as a side of the claim: g must be f (after the rule's
+// substitutions), x and p the rule's.
+Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const ex& x, const ex& point, int inf,
+                              const Substitutions& subs) {
+  const RuleSpec& rule = c.rule();
+  const SymbolTable& symbols = c.d.symbols;
+  ex gx = to_ginac(n.args[1], symbols);
+  int ginf = 0;
+  bool same_point;
+  if (is_infinity(n.args[2], ginf) || inf) same_point = ginf == inf;
+  else same_point = prove_equal(to_ginac(n.args[2], symbols), point, symbols, c.opt).holds();
+  if (!gx.is_equal(x) || !same_point)
+    c.fail(n.pos, "this limit is not the one of the rule ('" + rule.text + "')", n.length);
+  ex g = apply_subs(to_ginac(n.args[0], symbols), subs);
+  Verdict v = prove_equal(g, f, symbols, c.opt);
+  v.method = prefix_method("limit argument", v.method);
+  return v;
+}
+
+bool is_limit_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3; }
+
+
 Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
   const RuleSpec& rule = c.rule();
   const SymbolTable& symbols = c.d.symbols;
   const std::string rname = is_limit ? "limit" : "series";
-  const Relation& ar = claim_of(c.ref_step(rule.into[0]));
   auto subs = c.substitutions(rule.with, nullptr);
-  std::vector<ex> as = c.sides(ar);
-  for (auto& e : as) e = apply_subs(e, subs);
-  ex f = as.back();
-  bool has_lhs = as.size() >= 2;
   ex x = c.symbol_of(*rule.var);
   int inf = 0;
   ex point;
   if (!is_infinity(rule.point->value, inf)) point = c.conv(rule.point->value);
   if (!is_limit && inf != 0) c.fail(rule.point->pos, "a first-order series needs a finite point", rule.point->length);
+  if (!is_limit && rule.dir != 0)
+    c.fail(rule.point->pos, "'by series' takes a two-sided point; a one-sided expansion is not supported yet",
+           rule.point->length);
+
+  // The expression f: the last side of the step named by `of`, or else the claim's own first
+  // side (`lim: (1 - cos(x))/x^2 = 1/2  by limit x -> 0`), which is then not compared.
+  ex f;
+  std::size_t first_compared = 0;
+  std::optional<ex> ref_lhs;   // `of A` where A has two or more sides: A's first side
+  if (!rule.into.empty()) {
+    std::vector<ex> as = c.sides(claim_of(c.ref_step(rule.into[0])));
+    for (auto& e : as) e = apply_subs(e, subs);
+    f = as.back();
+    if (as.size() >= 2) ref_lhs = as[0];
+  } else {
+    if (claim.sides.size() < 2)
+      c.fail(c.s.claim_pos, "without 'of LABEL' the claim of 'by " + rname + "' must be 'EXPRESSION = " +
+                                (is_limit ? "LIMIT" : "SERIES") + "': the expression comes first");
+    const Node& n0 = claim.sides[0];
+    if (limit_value_side(c.s, n0, symbols))
+      c.fail(n0.pos, "the first side of the claim is the expression whose limit is taken", n0.length);
+    if (is_limit && is_limit_call(n0)) {
+      Node r = resolve_definitions(c.d, n0);
+      f = apply_subs(to_ginac(r.args[0], symbols), subs);
+    } else {
+      f = apply_subs(c.conv(n0), subs);
+    }
+    first_compared = 1;
+  }
 
   // What the helper derives
   ex value;
   std::string how;
   int value_inf = 0;
+  bool does_not_exist = false;
+  std::string dne_reason;
   if (is_limit) {
-    LimitResult L = compute_limit(f, GiNaC::ex_to<GiNaC::symbol>(x), inf ? ex(0) : point, inf, symbols);
-    if (!L.ok) return undecided("limit", L.reason.empty() ? "the limit helper could not decide" : L.reason);
-    value = L.value;
-    value_inf = L.infinite;
-    how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
-    c.res.derived = value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
+    LimitResult L = compute_limit(f, GiNaC::ex_to<GiNaC::symbol>(x), inf ? ex(0) : point, inf, rule.dir, symbols);
+    if (L.does_not_exist) {
+      does_not_exist = true;
+      dne_reason = L.reason;
+      how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+      c.res.derived = "undefined (" + L.reason + ")";
+    } else {
+      if (!L.ok) return undecided("limit", L.reason.empty() ? "the limit helper could not decide" : L.reason);
+      value = L.value;
+      value_inf = L.infinite;
+      how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+      c.res.derived = value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
+    }
   } else {
     std::string why;
     auto s = series_first_order(f, GiNaC::ex_to<GiNaC::symbol>(x), point, &why, &symbols);
@@ -51,46 +108,53 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
     how = "series (first order)";
     c.res.derived = c.text(value);
   }
+  const std::string derived_text =
+      does_not_exist ? "undefined" : value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
 
-  // Each side of the claim against it
+  // Each compared side of the claim against it
   Combiner all;
-  for (std::size_t i = 0; i < claim.sides.size(); ++i) {
-    Node n = resolve_definitions(c.d, claim.sides[i]);
+  for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
+    const Node& written = claim.sides[i];
     std::string what = claim.sides.size() > 1 ? "side " + std::to_string(i + 1) : "";
-    if (is_limit && n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3) {
-      // limit(g, x, p) written in the claim: g must be the referenced f, x and p the rule's.
-      ex gx = to_ginac(n.args[1], symbols);
-      int ginf = 0;
-      bool same_point;
-      if (is_infinity(n.args[2], ginf) || inf) same_point = ginf == inf;
-      else same_point = prove_equal(to_ginac(n.args[2], symbols), point, symbols, c.opt).holds();
-      if (!gx.is_equal(x) || !same_point)
-        c.fail(n.pos, "this limit is not the one of the rule ('" + rule.text + "')", n.length);
-      ex g = apply_subs(to_ginac(n.args[0], symbols), subs);
-      Verdict v = prove_equal(g, f, symbols, c.opt);
-      v.method = prefix_method("limit argument", v.method);
-      all.add(v, what, true);
+    if (limit_value_side(c.s, written, symbols)) {
+      int sinf = 0;
+      bool says_undefined = !is_infinity(written, sinf);
+      bool agrees = says_undefined ? does_not_exist : (!does_not_exist && sinf == value_inf);
+      if (agrees) {
+        all.add(proved(how, does_not_exist ? "the limit does not exist: " + dne_reason : std::string()), what);
+      } else {
+        Verdict v;
+        v.kind = VerdictKind::Refuted;
+        v.method = how;
+        v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
+                                  : "the limit is " + derived_text + ", the claim says " + to_text(written);
+        v.lhs_value = to_text(written);
+        v.rhs_value = derived_text;
+        all.add(v, what);
+      }
       continue;
     }
-    if (i == 0 && has_lhs) {
-      Verdict v = prove_equal(c.conv(claim.sides[0]), as[0], symbols, c.opt);
+    Node n = resolve_definitions(c.d, written);
+    if (is_limit && is_limit_call(n)) {
+      all.add(written_limit_matches(c, n, f, x, point, inf, subs), what, true);
+      continue;
+    }
+    if (i == 0 && ref_lhs) {
+      Verdict v = prove_equal(c.conv(written), *ref_lhs, symbols, c.opt);
       v.method = prefix_method(rname + " (left-hand side)", v.method);
       all.add(v, what, true);
       continue;
     }
-    int sinf = 0;
-    if (is_infinity(n, sinf) || value_inf) {
-      if (sinf == value_inf) all.add(proved(how), what);
-      else {
-        Verdict v;
-        v.kind = VerdictKind::Refuted;
-        v.method = how;
-        v.detail = "the limit is " + (value_inf ? std::string(value_inf > 0 ? "oo" : "-oo") : c.text(value)) +
-                   ", the claim says " + to_text(claim.sides[i]);
-        v.lhs_value = to_text(claim.sides[i]);
-        v.rhs_value = value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
-        all.add(v, what);
-      }
+    if (does_not_exist || value_inf) {
+      // A finite expression against a limit that is infinite or does not exist.
+      Verdict v;
+      v.kind = VerdictKind::Refuted;
+      v.method = how;
+      v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
+                                : "the limit is " + derived_text + ", the claim says " + to_text(written);
+      v.lhs_value = to_text(written);
+      v.rhs_value = derived_text;
+      all.add(v, what);
       continue;
     }
     Verdict v;

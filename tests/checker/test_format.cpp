@@ -154,3 +154,40 @@ TEST_CASE("formula() hands final formulas to the numeric module", "[format][form
   CHECK_THROWS_AS(dc::formula(d, "nowhere"), dc::InputError);
   CHECK(dc::formulas(d).size() >= 3);
 }
+
+TEST_CASE("limit points carry a direction; oo, -oo and undefined are limit values only", "[format][rules]") {
+  dc::SourceText src{"t.dc",
+                     "symbol x : real [1]\n"
+                     "a: 1/x = oo\n"
+                     "    by limit x -> 0+\n"
+                     "b: 1/x = -oo\n"
+                     "    by limit x -> 0 -\n"
+                     "c: 1/x = undefined\n"
+                     "    by limit x -> 0\n"
+                     "d: x = -oo\n"
+                     "    by limit x -> -oo of a\n"};
+  dc::Derivation d = dc::parse_derivation(src);
+  CHECK(d.find("a")->rule.dir == 1);
+  CHECK(d.find("a")->rule.point->value.text == "0");
+  CHECK(d.find("a")->rule.into.empty());
+  CHECK(d.find("b")->rule.dir == -1);
+  CHECK(d.find("c")->rule.dir == 0);
+  CHECK(d.find("d")->rule.dir == 0);
+  CHECK(d.find("d")->rule.into.size() == 1);
+
+  auto error_of = [](const std::string& text) -> std::string {
+    try {
+      dc::parse_derivation(dc::SourceText{"e.dc", "symbol x, y : real [1]\n" + text});
+    } catch (const dc::InputError& e) {
+      return std::to_string(e.pos().line) + ":" + std::to_string(e.pos().col) + " " + e.message();
+    }
+    return "no error";
+  };
+  // A direction goes with a finite point.
+  CHECK(error_of("a: x = oo\n    by limit x -> oo+\n").find("3:21 a direction") == 0);
+  // oo and undefined outside a limit step are not expressions.
+  CHECK(error_of("a: y = oo\n    by given\n").find("2:8 'oo'") == 0);
+  CHECK(error_of("a: y = undefined\n    by given\n").find("2:8 undefined symbol 'undefined'") == 0);
+  // A declared symbol named undefined keeps its meaning.
+  CHECK(error_of("symbol undefined : real [1]\na: 1/x = undefined\n    by limit x -> 0\n") == "no error");
+}
