@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "derivations/core/io.hpp"
+#include "derivations/core/big_o.hpp"
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/report.hpp"
@@ -295,12 +296,13 @@ class ClaimLine {
 
   Verdict run(const std::string& kind) {
     std::vector<std::string> fields{"lhs", "rhs"};
-    if (kind == "limit" || kind == "antiderivative" || kind == "series_first_order" || kind == "solves_ode")
+    if (kind == "limit" || kind == "antiderivative" || kind == "series_first_order" || kind == "series" ||
+        kind == "solves_ode")
       fields.push_back("var");
     if (kind == "solves_ode") fields.push_back("solution");
     std::map<std::string, Node> nodes;
     for (const auto& f : fields) nodes[f] = expr(f);
-    if (kind == "limit" || kind == "series_first_order") point_node_ = point();
+    if (kind == "limit" || kind == "series_first_order" || kind == "series") point_node_ = point();
     // symbols: identifiers of all expressions; y, yp, ypp for ODEs
     std::map<std::string, DomainAt> domains = assumptions();
     std::vector<AssumptionItem> items = assume_items(domains);
@@ -390,6 +392,17 @@ class ClaimLine {
       Verdict v = prove_equal(L.value, rhs, table_, opt_);
       v.method = how + " + " + v.method;
       return v;
+    }
+    if (kind == "series") {
+      // lhs - rhs = O((var - point)^order) as var -> point (from "dir"): big_o.hpp.
+      if (!j_.contains("order") || !j_.at("order").is_number_integer())
+        throw LineError{"a series claim needs an integer field 'order' (lhs - rhs = O((var - point)^order))"};
+      long long order = j_.at("order").get<long long>();
+      if (order < -1000 || order > 1000) throw LineError{"field 'order' must be between -1000 and 1000"};
+      ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+      int dir = limit_direction();
+      if (point_infinite_ && dir != 0) throw LineError{"field 'dir' goes with a finite point"};
+      return remainder_is_big_o(lhs - rhs, x, p, point_infinite_, dir, static_cast<int>(order), table_);
     }
     if (kind == "series_first_order") {
       ex p = to_ginac(*point_node_, table_);
@@ -648,13 +661,14 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
   if (j.contains("id")) out["id"] = j.at("id");
   out["line"] = line_no;
   if (!j.contains("kind"))
-    return error("missing field 'kind' (one of equal, limit, antiderivative, series_first_order, solves_ode)");
+    return error("missing field 'kind' (one of equal, limit, series, antiderivative, series_first_order, solves_ode)");
   if (!j.at("kind").is_string())
-    return error("field 'kind' must be a string (one of equal, limit, antiderivative, series_first_order, solves_ode)");
+    return error("field 'kind' must be a string (one of equal, limit, series, antiderivative, series_first_order, solves_ode)");
   std::string kind = j.at("kind").get<std::string>();
-  static const std::vector<std::string> kinds{"equal", "limit", "antiderivative", "series_first_order", "solves_ode"};
+  static const std::vector<std::string> kinds{"equal", "limit", "series", "antiderivative", "series_first_order",
+                                              "solves_ode"};
   if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
-    return error("unknown kind '" + kind + "'; expected one of equal, limit, antiderivative, series_first_order, solves_ode");
+    return error("unknown kind '" + kind + "'; expected one of equal, limit, series, antiderivative, series_first_order, solves_ode");
   out["kind"] = kind;
   Verdict v;
   try {

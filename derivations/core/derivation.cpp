@@ -815,7 +815,8 @@ class Reader {
       if (is_ident_start(c) && (i == 0 || !is_ident_char(s.text[i - 1]))) {
         std::size_t we;
         std::string w = word_at(s.text, i, &we);
-        if (contains(kRuleKeywords, w)) {
+        // `to order N` belongs to `by series` only (elsewhere `to` may be a symbol's name).
+        if (contains(kRuleKeywords, w) || (w == "to" && spec.name == "series")) {
           groups.back().e = i;
           groups.push_back({w, s.at(i), we, s.text.size()});
         }
@@ -833,7 +834,8 @@ class Reader {
     if (r == "rewrite") allowed = {"with"};
     else if (r == "substitute") allowed = {"into", "with"};
     else if (r == "solve") allowed = {"for"};
-    else if (r == "limit" || r == "series") allowed = {"->", "of", "with"};
+    else if (r == "limit") allowed = {"->", "of", "with"};
+    else if (r == "series") allowed = {"->", "of", "with", "to"};
     else if (r == "first_order") allowed = {"of"};
     else if (r == "differentiate") allowed = {"wrt"};
     else if (r == "integrate") allowed = {"wrt", "from", "with"};
@@ -889,6 +891,27 @@ class Reader {
           fail(s.at(pe), "a direction ('+' or '-') goes with a finite point; 'oo' and '-oo' are approached from one side already",
                1);
       }
+      // `to order N` (series): the claim holds up to O((x - p)^N).
+      if (const Group* to = group("to")) {
+        std::size_t b = to->b, e = to->e;
+        trim_range(s.text, b, e);
+        std::size_t we = b;
+        std::string w = b < e && is_ident_start(s.text[b]) ? word_at(s.text, b, &we) : std::string();
+        if (w != "order") fail(s.at(b), "expected 'order N' after 'to' (the claim holds up to O((x - point)^N))" + usage(r));
+        std::size_t nb = we, ne = e;
+        trim_range(s.text, nb, ne);
+        std::string num = s.text.substr(nb, ne - nb);
+        bool neg = !num.empty() && num[0] == '-';
+        std::string digits = neg ? num.substr(1) : num;
+        if (digits.empty() || digits.size() > 4 || digits.find_first_not_of("0123456789") != std::string::npos)
+          fail(s.at(nb), "expected an integer order between -1000 and 1000 after 'to order'" + usage(r),
+               std::max(1, static_cast<int>(ne - nb)));
+        int n = std::stoi(digits) * (neg ? -1 : 1);
+        if (n < -1000 || n > 1000)
+          fail(s.at(nb), "expected an integer order between -1000 and 1000 after 'to order'" + usage(r),
+               static_cast<int>(ne - nb));
+        spec.order = n;
+      }
       // `of A`: the expression of step A (its last side); without it, the claim's own first side.
       if (group("of")) spec.into = labels(s, *group("of"), "the label of the step to take the " + r + " of", 1);
     } else if (r == "first_order") {
@@ -929,7 +952,7 @@ class Reader {
         {"substitute", "by substitute S1, S2, ... into C"},
         {"solve", "by solve A, B, ... for x, y, ..."},
         {"limit", "by limit x -> POINT[+|-] [of A] [with y = value, ...]"},
-        {"series", "by series x -> POINT [of A]"},
+        {"series", "by series x -> POINT[+|-] [to order N] [of A]"},
         {"first_order", "by first_order d1, d2 of A"},
         {"differentiate", "by differentiate A wrt t"},
         {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]"},

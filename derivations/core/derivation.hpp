@@ -37,6 +37,7 @@ struct RuleSpec {
   std::optional<RuleArg> var;    // `limit x -> p` / `series x -> p` / `wrt t`
   std::optional<RuleArg> point;  // `-> p`, `from T0`
   int dir = 0;                   // `-> p+` (+1, from above), `-> p-` (-1, from below), else 0
+  std::optional<int> order;      // `by series ... to order N`: the claim holds up to O((x - p)^N)
   std::vector<RuleArg> smalls;   // `first_order d1, d2 of A`
   SourcePos pos;
   std::string text;

@@ -78,15 +78,16 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
 // Side conditions of the claim's sides (an integral's own variable and bounds excluded).
 void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
   try {
-    // `f = L  by limit x -> p` (no `of`): f is only looked at near p, so the conditions of f's
-    // parts that involve x (log(x) in x*log(x) as x -> 0+) are not claims about x's domain;
-    // the conditions of parts free of x are.
-    const bool own_operand = s.rule.name == "limit" && s.rule.into.empty() && s.rule.var && claim.sides.size() >= 2;
+    // A limit or series claim is about x near the point only (`x*log(x) = 0  by limit x -> 0+`,
+    // `log(sin(x)) = log(x) - x^2/6  by series x -> 0+ to order 4`): the conditions of parts
+    // that involve x are not claims about x's whole domain (the limit engine decides where the
+    // expressions are real near the point); the conditions of parts free of x are.
+    const bool asymptotic = (s.rule.name == "limit" || s.rule.name == "series") && s.rule.var;
     for (std::size_t si = 0; si < claim.sides.size(); ++si) {
       const Node& side = claim.sides[si];
       if (limit_value_side(s, side, d.symbols)) continue;
       Node n = resolve_definitions(d, side);
-      if (own_operand && si == 0) {
+      if (asymptotic) {
         const std::string& x = s.rule.var->label;
         std::function<bool(const Node&)> mentions = [&](const Node& m) {
           if (m.kind == NodeKind::Symbol && m.text == x) return true;

@@ -3,6 +3,7 @@
 // expression (or, without `of`, of the claim's first side) is derived with the limit helper
 // (derivations/core/limit.hpp), and the claim must equal it. A limit side may be `oo`, `-oo` or
 // `undefined` (the limit does not exist: one-sided limits differ, oscillation, no real value).
+#include "derivations/core/big_o.hpp"
 #include "derivations/core/limit.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
@@ -40,6 +41,31 @@ Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const 
 bool is_limit_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3; }
 
 
+// `by series x -> p to order N`: every compared side g of the claim satisfies
+// f - g = O((x - p)^N) (big_o.hpp), from the rule's side.
+Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, const std::optional<ex>& ref_lhs,
+                        std::size_t first_compared, const ex& x, const ex& point, int inf) {
+  const RuleSpec& rule = c.rule();
+  const SymbolTable& symbols = c.d.symbols;
+  const GiNaC::symbol& xs = GiNaC::ex_to<GiNaC::symbol>(x);
+  c.res.derived = c.text(f) + " + " + big_o_text(xs, inf ? ex(0) : point, inf, *rule.order, symbols);
+  Combiner all;
+  for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
+    std::string what = claim.sides.size() > 1 ? "side " + std::to_string(i + 1) : "";
+    if (i == 0 && ref_lhs) {
+      Verdict v = prove_equal(c.conv(claim.sides[0]), *ref_lhs, symbols, c.opt);
+      v.method = prefix_method("series (left-hand side)", v.method);
+      all.add(v, what, true);
+      continue;
+    }
+    ex g = c.conv(claim.sides[i]);
+    Verdict v = remainder_is_big_o(f - g, xs, inf ? ex(0) : point, inf, inf ? 0 : rule.dir, *rule.order, symbols);
+    v.method = "series to order " + std::to_string(*rule.order) + ": " + v.method;
+    all.add(v, what);
+  }
+  return all.result();
+}
+
 Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
   const RuleSpec& rule = c.rule();
   const SymbolTable& symbols = c.d.symbols;
@@ -49,9 +75,10 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
   int inf = 0;
   ex point;
   if (!is_infinity(rule.point->value, inf)) point = c.conv(rule.point->value);
-  if (!is_limit && inf != 0) c.fail(rule.point->pos, "a first-order series needs a finite point", rule.point->length);
-  if (!is_limit && rule.dir != 0)
-    c.fail(rule.point->pos, "'by series' takes a two-sided point; a one-sided expansion is not supported yet",
+  if (!is_limit && !rule.order && inf != 0)
+    c.fail(rule.point->pos, "a first-order series needs a finite point (or say 'to order N')", rule.point->length);
+  if (!is_limit && !rule.order && rule.dir != 0)
+    c.fail(rule.point->pos, "a one-sided expansion needs 'to order N' ('by series x -> 0+ to order 2 of A')",
            rule.point->length);
 
   // The expression f: the last side of the step named by `of`, or else the claim's own first
@@ -79,6 +106,8 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
     }
     first_compared = 1;
   }
+
+  if (!is_limit && rule.order) return series_to_order(c, claim, f, ref_lhs, first_compared, x, point, inf);
 
   // What the helper derives
   ex value;

@@ -188,6 +188,17 @@ TEST_CASE("limit points carry a direction; oo, -oo and undefined are limit value
   // oo and undefined outside a limit step are not expressions.
   CHECK(error_of("a: y = oo\n    by given\n").find("2:8 'oo'") == 0);
   CHECK(error_of("a: y = undefined\n    by given\n").find("2:8 undefined symbol 'undefined'") == 0);
+  // `to order N` (series only; elsewhere `to` may be a symbol).
+  CHECK(error_of("a: sin(x) = x\n    by series x -> 0 to degree 3\n").find("3:25 expected 'order N' after 'to'") == 0);
+  CHECK(error_of("a: sin(x) = x\n    by series x -> 0 to order 2.5\n").find("3:31 expected an integer order") == 0);
+  CHECK(error_of("symbol to : real [1]\na: x = to\n    by given\nb: x = 2\n    by rewrite a with to = 2\n") == "no error");
+  {
+    dc::Derivation s = dc::parse_derivation(
+        dc::SourceText{"s.dc", "symbol x : real [1]\na: sin(x) = x - x^3/6\n    by series x -> 0- to order -2\n"});
+    REQUIRE(s.find("a")->rule.order);
+    CHECK(*s.find("a")->rule.order == -2);
+    CHECK(s.find("a")->rule.dir == -1);
+  }
   // A declared symbol named undefined keeps its meaning.
   CHECK(error_of("symbol undefined : real [1]\na: 1/x = undefined\n    by limit x -> 0\n") == "no error");
 }

@@ -1,0 +1,88 @@
+#include "derivations/core/big_o.hpp"
+
+#include "derivations/core/limit.hpp"
+#include "derivations/core/printer.hpp"
+
+namespace dc {
+
+using GiNaC::ex;
+
+std::string big_o_text(const GiNaC::symbol& x, const ex& point, int at_infinity, int order, const SymbolTable& ctx) {
+  if (at_infinity != 0)
+    return "O(" + x.get_name() + "^" + std::to_string(-order) + ") as " + x.get_name() + " -> " +
+           (at_infinity > 0 ? "oo" : "-oo");
+  std::string base = point.is_zero() ? x.get_name() : "(" + print_text(x - point, ctx) + ")";
+  return "O(" + base + (order == 1 ? "" : "^" + std::to_string(order)) + ")";
+}
+
+namespace {
+
+std::string limit_text(const LimitResult& L, const SymbolTable& ctx) {
+  return L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, ctx);
+}
+
+}  // namespace
+
+Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex& point, int at_infinity, int dir,
+                           int order, const SymbolTable& ctx) {
+  const ex gauge = at_infinity != 0 ? GiNaC::pow(x, -order) : GiNaC::pow(x - point, order);
+  const ex quotient = remainder / gauge;
+  const std::string o = big_o_text(x, point, at_infinity, order, ctx);
+  const std::string over = at_infinity != 0 ? "(lhs - rhs)*" + x.get_name() + "^" + std::to_string(order)
+                                            : "(lhs - rhs)/" + o.substr(2, o.size() - 3);
+  Verdict v;
+  v.method = "remainder / gauge via limit";
+  auto decide = [&](const LimitResult& L, const std::string& side) -> bool {
+    if (!L.ok) return false;
+    v.method = "remainder / gauge via limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+    if (L.infinite != 0) {
+      v.kind = VerdictKind::Refuted;
+      v.lhs_value = over + " -> " + limit_text(L, ctx) + side;
+      v.rhs_value = "bounded";
+      v.detail = "the remainder is not " + o + ": " + over + " tends to " + limit_text(L, ctx) + side;
+    } else {
+      v.kind = VerdictKind::Proved;
+      v.detail = over + " -> " + limit_text(L, ctx) + side + ", so lhs - rhs = " + o;
+    }
+    return true;
+  };
+  if (remainder.is_zero()) {
+    v.kind = VerdictKind::Proved;
+    v.method = "remainder is zero";
+    return v;
+  }
+  LimitResult L = compute_limit(quotient, x, at_infinity ? ex(0) : point, at_infinity, dir, ctx);
+  if (decide(L, "")) return v;
+  // Without a (two-sided) limit the quotient may still be bounded on each side: |x|^3 / x^3
+  // tends to 1 from above and -1 from below. Each side on its own.
+  if (L.does_not_exist && at_infinity == 0 && dir == 0) {
+    Verdict sides_v;
+    bool all_finite = true;
+    std::string details;
+    for (int s : {+1, -1}) {
+      LimitResult S = compute_limit(quotient, x, point, 0, s, ctx);
+      const std::string side = s > 0 ? " from above" : " from below";
+      if (S.ok && S.infinite != 0) {
+        decide(S, side);
+        return v;
+      }
+      if (!S.ok) {
+        all_finite = false;
+        continue;
+      }
+      details += (details.empty() ? "" : ", ") + limit_text(S, ctx) + side;
+    }
+    if (all_finite) {
+      v.kind = VerdictKind::Proved;
+      v.method = "remainder / gauge via one-sided limits";
+      v.detail = over + " -> " + details + ", so lhs - rhs = " + o;
+      return v;
+    }
+  }
+  v.kind = VerdictKind::Undecided;
+  v.reason = "whether " + over + " stays bounded was not decided: " +
+             (L.reason.empty() ? std::string("the limit engine could not decide its limit") : L.reason);
+  return v;
+}
+
+}  // namespace dc
