@@ -5,6 +5,7 @@
 
 #include "derivations/core/io.hpp"
 #include "derivations/core/big_o.hpp"
+#include "derivations/core/integral_equal.hpp"
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/report.hpp"
@@ -252,6 +253,20 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
   } catch (const InputError& e) {
     throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
   }
+  std::optional<Verdict> iv;
+  try {
+    iv = integral_equality(l, r, table, opt);
+  } catch (const InputError& e) {
+    throw quoted(e, e.pos().file == "<lhs>" ? lhs : rhs);
+  }
+  if (iv) {
+    const Node& closed = l.kind == NodeKind::Call && l.text == "integral" ? r : l;
+    if (iv->kind != VerdictKind::Undecided || iv->method != "integral") {
+      iv->side_conditions = side_conditions_of_sides({&closed}, table);
+      require_defined_on_domain(*iv);
+    }
+    return *iv;
+  }
   ex a, b;
   try {
     try {
@@ -328,6 +343,15 @@ class ClaimLine {
         throw LineError{"in field '" + f + "': " + e.what()};
       }
     };
+    if (kind == "equal") {
+      std::optional<Verdict> iv;
+      try {
+        iv = integral_equality(nodes.at("lhs"), nodes.at("rhs"), table_, opt_);
+      } catch (const InputError& e) {
+        throw LineError{"in the integral: " + e.message()};
+      }
+      if (iv) return *iv;
+    }
     ex lhs = conv("lhs"), rhs = conv("rhs");
     if (kind == "equal") {
       Verdict v = prove_equal(lhs, rhs, table_, opt_);

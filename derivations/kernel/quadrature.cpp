@@ -180,7 +180,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
   d::PointSampler sampler({a, b, G, f0}, ctx);
   d::Rng rng(opt.seed ^ 0x1D7E6A11ull);
   const int need = std::max(1, opt.probe_points);
-  int agreed = 0, attempts = 0, unusable = 0;
+  int agreed = 0, attempts = 0, unusable = 0, integral_failures = 0;
   double max_rel = 0;
   std::string why;
   for (; attempts < need * 20 && agreed < need; ++attempts) {
@@ -202,8 +202,17 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
       continue;
     }
     PointComparison c;
+    bool integral_unknown = false;
     for (long prec = 160; prec <= 640; prec *= 2) {
       Ball I = integrate_constant(fp, x, ap, bp, prec);
+      if (I.status == BallStatus::Unknown) {
+        // Not finite (a singularity near the path, or the evaluation budget ran out): more
+        // precision does not help, and another point rarely does (1/x from -1 to b).
+        integral_unknown = true;
+        c.kind = K::Unknown;
+        c.why = "lhs: " + I.why;
+        break;
+      }
       Ball g = enclose(Gp, prec);
       c = compare_balls(I, g, std::lround(opt.rel_tol_exponent));
       c.digits = prec * 3 / 10;
@@ -229,6 +238,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
     }
     ++unusable;
     if (why.empty()) why = c.why;
+    if (integral_unknown && ++integral_failures >= 3 && agreed == 0) break;
   }
   if (agreed >= need) {
     v.kind = VerdictKind::HoldsNumerically;

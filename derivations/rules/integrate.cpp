@@ -5,6 +5,7 @@
 //     Y = G, and G takes the initial value at T0.
 // The references hold at the bounds: only equations between function applications of t hold
 // for every t (see has_application_at); the others are used as they are.
+#include "derivations/core/integral_equal.hpp"
 #include "derivations/core/prove_detail.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "derivations/rules/dispatch.hpp"
@@ -41,9 +42,12 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
   std::vector<Eq> eqs = at_points(ref_eqs, t, {b, a});
   const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
   Combiner all;
-  if (f.has(b)) {
-    // The upper limit also appears in the integrand: d/db of the integral is not f(b), so
-    // the closed form is checked against a rigorous quadrature at sampled parameter values.
+  const bool continuous = continuous_everywhere(f, GiNaC::ex_to<GiNaC::symbol>(t));
+  if (f.has(b) || !continuous) {
+    // The upper limit also appears in the integrand (d/db of the integral is not f(b)), or the
+    // integrand is not known to be continuous between the limits (1/x from -1 to b: the
+    // derivative test would accept log(b^2)/2 for a divergent integral): the closed form is
+    // checked against a rigorous quadrature at sampled parameter values.
     // A refutation stands only when every reference can be satisfied independently of the
     // point (it constrains a function that neither the integrand nor the claim uses).
     bool refs_independent = true;
@@ -59,7 +63,9 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
                                              "satisfy the references");
       all.add(v, claim.sides.size() > 2 ? "side " + std::to_string(i + 1) : "");
     }
-    c.res.derived = "the integrand depends on the upper limit " + c.text(b) + ": checked by rigorous quadrature";
+    c.res.derived = f.has(b) ? "the integrand depends on the upper limit " + c.text(b) + ": checked by rigorous quadrature"
+                             : "the integrand is not known to be continuous between the limits: checked by rigorous "
+                               "quadrature";
     return all.result();
   }
   for (std::size_t i = 1; i < claim.sides.size(); ++i) {

@@ -128,3 +128,32 @@ TEST_CASE("equal: malformed or contradictory assumption lists are input errors",
     CHECK(e.format().find('^') != std::string::npos);
   }
 }
+
+TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]") {
+  struct Case {
+    const char* line;
+    const char* verdict;
+    const char* method;   // a substring of the method ("" for any)
+  };
+  auto x = GENERATE(values<Case>({
+      {R"J({"kind":"equal","lhs":"integral(x^2, x, 0, 1)","rhs":"1/3"})J", "proved", "integrated exactly"},
+      {R"J({"kind":"equal","lhs":"integral(x^2, x, 0, 1)","rhs":"1/2"})J", "refuted", "integrated exactly"},
+      {R"J({"kind":"equal","lhs":"F0*L/2","rhs":"integral(F0*x/L, x, 0, L)","assumptions":{"F0":"positive","L":"positive"}})J",
+       "proved", "integrated exactly"},
+      {R"J({"kind":"equal","lhs":"integral(exp(-x/tau), x, 0, T)","rhs":"tau*(1 - exp(-T/tau))","assumptions":{"tau":"positive","T":"positive"}})J",
+       "proved", "d/dT of the closed form"},
+      {R"J({"kind":"equal","lhs":"integral(exp(-x/tau), x, 0, T)","rhs":"tau*(1 + exp(-T/tau))","assumptions":{"tau":"positive","T":"positive"}})J",
+       "refuted", "rigorous quadrature"},
+      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/2"})J", "holds_numerically", "rigorous quadrature"},
+      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/3"})J", "refuted", "rigorous quadrature"},
+      {R"J({"kind":"equal","lhs":"integral(1/x, x, 1, b)","rhs":"log(b)","assumptions":{"b":"positive"}})J", "holds_numerically", ""},
+      // 1/x across 0 diverges: never proved (GiNaC's eval_integ would say log(b) - log(-1))
+      {R"J({"kind":"equal","lhs":"integral(1/x, x, -1, b)","rhs":"log(b^2)/2","assumptions":{"b":"positive"}})J", "undecided", ""},
+      {R"J({"kind":"equal","lhs":"2*integral(x, x, 0, 1)","rhs":"1"})J", "undecided", "integral"},
+      {R"J({"kind":"equal","lhs":"integral(exp(-x^2), x, 0, oo)","rhs":"sqrt(pi)/2"})J", "undecided", "integral"},
+  }));
+  auto r = dc::check_claim_line(x.line, 1, "b.jsonl");
+  CAPTURE(x.line, r.dump());
+  CHECK(r.at("verdict") == x.verdict);
+  CHECK(r.value("method", "").find(x.method) != std::string::npos);
+}

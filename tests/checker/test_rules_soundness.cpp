@@ -467,3 +467,24 @@ TEST_CASE("a counterexample is recomputed when an elimination leaves a domain", 
     CHECK(name != "v2p");   // determined by the references, never sampled freely
   }
 }
+
+TEST_CASE("integrate does not prove a divergent integral by the derivative test", "[rules][soundness][integrate]") {
+  // log(b^2)/2 has derivative 1/b and vanishes at b = -1, but the integral of 1/x from -1 to
+  // b > 0 diverges: the fundamental theorem of calculus needs the integrand continuous between
+  // the limits. Found by review; before the fix this step was proved.
+  Checked c = check("ftc.dc",
+                    "symbol x : real [1]\n"
+                    "symbol b : positive [1]\n"
+                    "p: x = x\n"
+                    "    by given\n"
+                    "divergent: integral(1/x, x, -1, b) = log(b^2)/2\n"
+                    "    by integrate p wrt x from -1\n"
+                    "ok: integral(1/x, x, 1, b) = log(b)\n"
+                    "    by integrate p wrt x from 1\n"
+                    "ok_entire: integral(x*exp(-x^2), x, 0, b) = (1 - exp(-b^2))/2\n"
+                    "    by integrate p wrt x from 0\n");
+  CHECK_FALSE(c.at("divergent").verdict.holds());
+  CHECK(c.at("divergent").verdict.kind != dc::VerdictKind::Refuted);   // undecided: no rigorous value exists
+  CHECK(c.at("ok").verdict.holds());
+  CHECK(c.at("ok_entire").verdict.kind == dc::VerdictKind::Proved);
+}

@@ -1,0 +1,150 @@
+#include "derivations/core/integral_equal.hpp"
+
+#include <string>
+
+#include <ginac/ginac.h>
+
+#include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
+#include "derivations/kernel/quadrature.hpp"
+
+namespace dc {
+
+using GiNaC::ex;
+
+namespace {
+
+bool is_integral(const Node& n) { return n.kind == NodeKind::Call && n.text == "integral"; }
+
+bool contains_integral(const Node& n) {
+  if (is_integral(n)) return true;
+  for (const auto& a : n.args)
+    if (contains_integral(a)) return true;
+  return false;
+}
+
+Verdict undecided_because(const std::string& why) {
+  Verdict v;
+  v.kind = VerdictKind::Undecided;
+  v.method = "integral";
+  v.reason = why;
+  return v;
+}
+
+bool is_infinity(const Node& n) {
+  const Node& v = n.kind == NodeKind::Neg ? n.args[0] : n;
+  return v.kind == NodeKind::Symbol && v.text == "oo";
+}
+
+}  // namespace
+
+bool continuous_everywhere(const ex& e, const GiNaC::symbol& x) {
+  if (!e.has(x)) return true;
+  if (e.is_equal(x)) return true;
+  if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!continuous_everywhere(e.op(i), x)) return false;
+    return true;
+  }
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex& n = e.op(1);
+    if (n.has(x)) {
+      // c^(g(x)) with a constant positive base c would do; only exp is accepted (below).
+      return false;
+    }
+    return GiNaC::is_a<GiNaC::numeric>(n) && GiNaC::ex_to<GiNaC::numeric>(n).is_nonneg_integer() &&
+           continuous_everywhere(e.op(0), x);
+  }
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (name != "exp" && name != "sin" && name != "cos" && name != "atan" && !detail::is_abstract_application(e))
+      return false;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+      if (!continuous_everywhere(e.op(i), x)) return false;
+    return true;
+  }
+  return false;
+}
+
+namespace {
+
+std::string prefixed(const std::string& head, const std::string& method) {
+  return method.empty() ? head : head + " + " + method;
+}
+
+}  // namespace
+
+std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const SymbolTable& table,
+                                         const ProveOptions& opt) {
+  const bool in_l = contains_integral(lhs), in_r = contains_integral(rhs);
+  if (!in_l && !in_r) return std::nullopt;
+  const Node* integral = nullptr;
+  const Node* other = nullptr;
+  if (is_integral(lhs) && !in_r) integral = &lhs, other = &rhs;
+  else if (is_integral(rhs) && !in_l) integral = &rhs, other = &lhs;
+  if (!integral)
+    return undecided_because(
+        "a definite integral is checked as a whole side of an equation, 'integral(f, x, a, b) = G' (here it is part "
+        "of a larger expression, or on both sides)");
+  if (integral->args.size() != 4)
+    throw InputError(integral->pos, "expected integral(f, x, a, b): 4 arguments", integral->length);
+  if (is_infinity(integral->args[2]) || is_infinity(integral->args[3]))
+    return undecided_because("improper integrals (a limit of integration at oo or -oo) are not checked yet");
+  const ex f = to_ginac(integral->args[0], table);
+  const ex xe = to_ginac(integral->args[1], table);
+  if (!GiNaC::is_a<GiNaC::symbol>(xe))
+    throw InputError(integral->args[1].pos, "the variable of integration must be a symbol", integral->args[1].length);
+  const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(xe);
+  const ex a = to_ginac(integral->args[2], table);
+  const ex b = to_ginac(integral->args[3], table);
+  if (a.has(x) || b.has(x))
+    throw InputError(integral->pos, "a limit of integration contains the variable of integration", integral->length);
+  const ex G = to_ginac(*other, table);
+
+  // 1. A polynomial integrand: GiNaC integrates it exactly. (Only then: eval_integ also
+  // "integrates" 1/x to log across 0, where the integral diverges.)
+  if (f.is_polynomial(x)) try {
+    ex exact = GiNaC::integral(x, a, b, f).eval_integ();
+    if (!exact.has(GiNaC::integral(x, a, b, f)) && !GiNaC::is_a<GiNaC::integral>(exact)) {
+      bool residual = false;
+      for (GiNaC::const_preorder_iterator it = exact.preorder_begin(); it != exact.preorder_end(); ++it)
+        residual = residual || GiNaC::is_a<GiNaC::integral>(*it);
+      if (!residual) {
+        Verdict v = prove_equal(exact, G, table, opt);
+        if (v.kind == VerdictKind::Proved || v.kind == VerdictKind::Refuted) {
+          v.method = prefixed("integral (polynomial integrand, integrated exactly: " + print_text(exact, table) + ")",
+                              v.method);
+          return v;
+        }
+      }
+    }
+  } catch (const std::exception&) {
+  }
+
+  // 2. G as an antiderivative in the upper limit.
+  std::string symbolic_note;
+  if (GiNaC::is_a<GiNaC::symbol>(b) && !f.has(b) && !a.has(b) && continuous_everywhere(f, x)) {
+    const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
+    Verdict d = prove_equal(G.diff(bs), f.subs(x == b), table, opt);
+    if (d.kind == VerdictKind::Proved) {
+      Verdict z = prove_equal(G.subs(b == a), 0, table, opt);
+      if (z.kind == VerdictKind::Proved) {
+        Verdict v;
+        v.kind = VerdictKind::Proved;
+        v.method = "integral: d/d" + bs.get_name() + " of the closed form is the integrand at " + bs.get_name() +
+                   " (" + d.method + "), and the closed form is 0 at " + bs.get_name() + " = " + print_text(a, table) +
+                   " (" + z.method + ")";
+        return v;
+      }
+    }
+    symbolic_note = "; d/d" + bs.get_name() + " of the closed form is " + (d.holds() ? "the integrand" : "not proved to be the integrand");
+  }
+
+  // 3. Rigorous quadrature at sampled parameter values.
+  Verdict v = kernel::probe_definite_integral(f, x, a, b, G, table, opt);
+  v.method = prefixed("integral", v.method);
+  if (v.kind == VerdictKind::Undecided && !symbolic_note.empty()) v.reason += symbolic_note;
+  return v;
+}
+
+}  // namespace dc

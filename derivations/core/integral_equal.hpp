@@ -1,0 +1,37 @@
+// A definite integral as a whole side of an equation, `integral(f, x, a, b) = G`, in
+// `derivcheck equal`, in claims of kind "equal" and in the Catch2 matchers (a `.dc` step checks
+// it with `by integrate`). Methods, in order:
+//   1. GiNaC integrates a polynomial integrand exactly (integral::eval_integ); the result is
+//      compared with G by the prover;
+//   2. when the upper limit b is a symbol that the integrand does not contain: G is an
+//      antiderivative in b (dG/db = f(b)) that vanishes at b = a, each proved symbolically;
+//   3. rigorous quadrature (Arb) at sampled parameter values: a certified difference refutes,
+//      agreement everywhere holds numerically.
+// An integral inside a larger expression is undecided with that reason, not an input error.
+#pragma once
+#include <optional>
+
+#include <ginac/ginac.h>
+
+#include "derivations/core/expr.hpp"
+#include "derivations/core/prove.hpp"
+#include "derivations/core/symbols.hpp"
+#include "derivations/core/verdict.hpp"
+
+namespace dc {
+
+// Continuous in x on the whole real line: every part that contains x is a sum, a product, a
+// power with a nonnegative integer exponent, exp / sin / cos / atan of such a part, or an
+// application of a declared function (declared functions are taken to be continuous, as
+// physics texts take them). Parts free of x are constants here (their own conditions are the
+// claim's). The fundamental theorem of calculus needs the integrand continuous between a and b
+// for every admissible b; this guarantees it. 1/x, log(x), sqrt(x), tan(x) fail the test and
+// are left to rigorous quadrature (the integral of 1/x from -1 to b > 0 diverges, although
+// log(b^2)/2 has derivative 1/b and vanishes at b = -1).
+bool continuous_everywhere(const GiNaC::ex& e, const GiNaC::symbol& x);
+
+// nullopt when neither side contains integral(...): the caller proceeds as usual.
+std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const SymbolTable& table,
+                                         const ProveOptions& opt = {});
+
+}  // namespace dc
