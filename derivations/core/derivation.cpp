@@ -122,6 +122,7 @@ class Reader {
   std::vector<Statement> statements_;
   std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
   std::map<std::string, std::size_t> defined_;   // labels defined so far -> step index
+  std::set<std::string> used_names_;             // identifiers in the claims of the steps so far
   std::optional<SourcePos> first_assume_;
   std::string current_label_;                    // the step being read
 
@@ -621,8 +622,41 @@ class Reader {
       for (const auto& side : step.claim.sides)
         if (!limit_value_side(step, side, d_.symbols)) validate_side(side);
     }
+    step.names_result = names_new_quantity(step);
+    for (const Relation* r : {&step.claim, step.erratum ? &step.erratum->corrected : &step.claim})
+      for (const auto& side : r->sides) {
+        std::vector<const Node*> ids;
+        collect_identifiers(side, ids);
+        for (const Node* id : ids) used_names_.insert(id->text);
+      }
+    for (const auto& w : step.rule.with)
+      for (const auto& side : w.equation.sides) {
+        std::vector<const Node*> ids;
+        collect_identifiers(side, ids);
+        for (const Node* id : ids) used_names_.insert(id->text);
+      }
     defined_[step.label] = d_.steps.size();
     d_.steps.push_back(std::move(step));
+  }
+
+  // See Step::names_result.
+  bool names_new_quantity(const Step& step) const {
+    if (step.rule.name == "given" || step.rule.name == "definition" || step.erratum) return false;
+    if (step.claim.sides.size() < 3) return false;
+    const Node& n = step.claim.sides[0];
+    if (used_names_.count(n.text)) return false;
+    const SymbolInfo* info = d_.symbols.find(n.text);
+    if (!info) return false;
+    // Only an unconstrained quantity can be named: `symbol W : positive` and `W = -1 = -1`
+    // must stay a refuted claim, not a definition.
+    if (info->domain.kind != Domain::Kind::Real) return false;
+    for (const auto& c : d_.symbols.constraints())
+      if (c.lhs.has(info->sym) || c.rhs.has(info->sym)) return false;
+    if (n.kind == NodeKind::Symbol) return !info->is_function;
+    if (n.kind != NodeKind::Call || !info->is_function || n.args.size() != info->params.size()) return false;
+    for (std::size_t i = 0; i < n.args.size(); ++i)
+      if (n.args[i].kind != NodeKind::Symbol || n.args[i].text != info->params[i]) return false;
+    return true;
   }
 
   // integral(...) cannot be converted to GiNaC; validate its parts instead.
@@ -919,17 +953,21 @@ class Reader {
       for (auto& it : pre_items) spec.smalls.push_back(symbol_arg(s, it.first, it.second));
       spec.into = labels(s, require("of"), "the label of the step to expand", 1);
     } else if (r == "differentiate" || r == "integrate" || r == "solves_ode") {
-      if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the label of the equation" + usage(r));
+      // differentiate and integrate may work on the claim's own diff(...) / integral(...)
+      if (pre_items.empty() && r == "solves_ode")
+        fail(s.at(nonspace(s, pre.b)), "expected the label of the equation" + usage(r));
       for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
       const Group& g = require("wrt");
       auto wit = items(s, g);
       if (wit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one variable after 'wrt'" + usage(r));
       spec.var = symbol_arg(s, wit[0].first, wit[0].second);
       if (r == "integrate") {
-        const Group& f = require("from");
-        auto fit = items(s, f);
-        if (fit.size() != 1) fail(s.at(nonspace(s, f.b)), "expected one lower limit after 'from'" + usage(r));
-        spec.point = value_arg(s, fit[0].first, fit[0].second);
+        // `from T0` is needed by the ODE form only (an integral(f, x, a, b) claim has its limits).
+        if (const Group* f = group("from")) {
+          auto fit = items(s, *f);
+          if (fit.size() != 1) fail(s.at(nonspace(s, f->b)), "expected one lower limit after 'from'" + usage(r));
+          spec.point = value_arg(s, fit[0].first, fit[0].second);
+        }
       }
     }
     if (const Group* g = group("with")) {
@@ -954,8 +992,9 @@ class Reader {
         {"limit", "by limit x -> POINT[+|-] [of A] [with y = value, ...]"},
         {"series", "by series x -> POINT[+|-] [to order N] [of A]"},
         {"first_order", "by first_order d1, d2 of A"},
-        {"differentiate", "by differentiate A wrt t"},
-        {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]"},
+        {"differentiate", "by differentiate [A, ...] wrt t"},
+        {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]' or 'by integrate [A, ...] wrt x' for a claim "
+                      "'integral(f, x, a, b) = G"},
         {"solves_ode", "by solves_ode A wrt t [with y(T0) = value, ...]"}};
     auto it = u.find(r);
     return it == u.end() ? "" : "; usage: '" + it->second + "'";
@@ -1067,12 +1106,13 @@ struct Definition {
 };
 
 bool defines_name(const Step& s) {
-  return s.rule.name == "definition" && s.claim.sides.size() >= 2 &&
+  return (s.rule.name == "definition" || s.names_result) && s.claim.sides.size() >= 2 &&
          (s.claim.sides[0].kind == NodeKind::Call || s.claim.sides[0].kind == NodeKind::Symbol);
 }
 
 Definition definition_of(const Step& s) {
-  Definition def{{}, &s.claim.sides.back()};
+  // A named result `V(t) = E1 = E2` names E1: a wrong E2 is then reported at its own link.
+  Definition def{{}, s.names_result ? &s.claim.sides[1] : &s.claim.sides.back()};
   if (s.claim.sides[0].kind == NodeKind::Call)
     for (const auto& a : s.claim.sides[0].args) def.params.push_back(a.text);
   return def;

@@ -61,6 +61,11 @@ struct Step {
   std::vector<std::string> notes;
   std::optional<Erratum> erratum;
   std::optional<std::string> stable_of;   // `stable LABEL "regime"`
+  // The claim is a chain `NAME = E1 = E2 ...` whose NAME (a declared symbol, or a declared
+  // function applied to its own parameters, `V(t)`) appears in no earlier step: the step names
+  // E1 (NAME is defined as E1 for the steps after it, as by `definition`) and checks the rest
+  // of the chain with its rule (`V(t) = diff(X(t), t) = A*omega*cos(omega*t)`).
+  bool names_result = false;
   std::string stable_regime;
 };
 

@@ -1,5 +1,5 @@
 // `by differentiate A, ... wrt t`: the claim follows from the references and their derivatives
-// in t. Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may
+// in t. Without references the claim's own diff(...) is carried out and each link must hold. Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may
 // be differentiated; an equation between plain symbols (y = F0*t, y a symbol) is one value,
 // and differentiating it would "derive" 0 = F0. Such equations are used as they are.
 #include "derivations/rules/dispatch.hpp"
@@ -7,10 +7,34 @@
 
 namespace dc::rules {
 
+namespace {
+
+bool has_diff_call(const Node& n) {
+  if (n.kind == NodeKind::Call && n.text == "diff") return true;
+  for (const auto& a : n.args)
+    if (has_diff_call(a)) return true;
+  return false;
+}
+
+}  // namespace
+
 Verdict differentiate(StepContext& c, const Relation& claim) {
   const RuleSpec& rule = c.rule();
   ex t = c.symbol_of(*rule.var);
   const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  if (rule.refs.empty()) {
+    // The claim's own derivative: `diff(A*sin(omega*t), t) = A*omega*cos(omega*t)`; each link
+    // of the chain must hold with diff(...) carried out.
+    bool any = false;
+    for (const auto& side : claim.sides) any = any || has_diff_call(resolve_definitions(c.d, side));
+    if (!any)
+      c.fail(c.s.claim_pos, "without a cited equation the claim of 'by differentiate' must contain diff(..., " +
+                                c.text(t) + ")");
+    std::vector<ex> sd = c.sides(claim);
+    if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by differentiate' must be an equation");
+    c.res.derived = c.text(sd[0]);
+    return links_follow(c, sd, {}, "differentiate");
+  }
   std::vector<Eq> eqs, originals;
   for (const auto& a : rule.refs)
     for (auto& q : c.equations(a)) {

@@ -138,11 +138,20 @@ Verdict ode_form(StepContext& c, const Relation& claim, const ex& t, const ex& T
 }  // namespace
 
 Verdict integrate(StepContext& c, const Relation& claim) {
-  ex t = c.symbol_of(*c.rule().var);
-  ex T0 = c.conv(c.rule().point->value);
-  std::vector<Eq> ref_eqs = c.all_equations(c.rule().refs);
+  const RuleSpec& rule = c.rule();
+  ex t = c.symbol_of(*rule.var);
+  std::vector<Eq> ref_eqs = c.all_equations(rule.refs);
   Node side0 = resolve_definitions(c.d, claim.sides[0]);
   if (side0.kind == NodeKind::Call && side0.text == "integral") return definite_integral(c, claim, side0, t, ref_eqs);
+  if (rule.refs.empty())
+    c.fail(rule.pos, "without a cited ODE the claim of 'by integrate' must be 'integral(f, x, a, b) = G'; to solve an ODE "
+                     "write 'by integrate A wrt t from T0' with A the ODE 'diff(y(t), t) = f'",
+           static_cast<int>(rule.text.size()));
+  if (!rule.point)
+    c.fail(rule.pos, "the ODE form of 'by integrate' needs the initial time: 'by integrate " + rule.refs[0].label +
+                         " wrt " + rule.var->label + " from T0'",
+           static_cast<int>(rule.text.size()));
+  ex T0 = c.conv(rule.point->value);
   return ode_form(c, claim, t, T0);
 }
 

@@ -488,3 +488,33 @@ TEST_CASE("integrate does not prove a divergent integral by the derivative test"
   CHECK(c.at("ok").verdict.holds());
   CHECK(c.at("ok_entire").verdict.kind == dc::VerdictKind::Proved);
 }
+
+TEST_CASE("a chain may name a new quantity; the name never hides a wrong link", "[rules][soundness][names]") {
+  Checked c = check("names.dc",
+                    "symbol t, omega : real [1]\n"
+                    "symbol A : positive [m]\n"
+                    "symbol W : positive [m]\n"
+                    "symbol U : real [m]\n"
+                    "function X(t) : real [m]\n"
+                    "function V(t) : real [m]\n"
+                    "sho: X(t) = A*sin(omega*t)\n"
+                    "    by given\n"
+                    "vel: V(t) = diff(X(t), t) = A*omega*cos(omega*t)\n"
+                    "    by differentiate sho wrt t\n"
+                    "later: V(t) = A*omega*cos(omega*t)\n"
+                    "    by rewrite vel\n"
+                    "bad_later: V(t) = A*omega*sin(omega*t)\n"
+                    "    by rewrite vel\n"
+                    "bad_chain: U = A = 2*A\n"
+                    "    by rewrite\n"
+                    "bad_positive: W = -A = -A\n"
+                    "    by rewrite\n");
+  CHECK(c.d->find("vel")->names_result);
+  require_holds(c, "vel");
+  require_holds(c, "later");          // V(t) is now the derivative of X(t)
+  require_refuted(c, "bad_later");
+  CHECK(c.d->find("bad_chain")->names_result);
+  require_refuted(c, "bad_chain");    // U names A, but A = 2*A is false
+  CHECK_FALSE(c.d->find("bad_positive")->names_result);   // W is declared positive: not a free name
+  require_refuted(c, "bad_positive");
+}
