@@ -350,7 +350,24 @@ class Reader {
   }
 
   // Convert with the table, for validation (undefined symbols, exponent limits, ...).
-  GiNaC::ex validate(const Node& n) { return to_ginac(n, d_.symbols); }
+  // Undeclared symbols, bad calls and other input errors throw here. A limit(...) that the
+  // limit engine cannot decide is not an input error: the step that uses it is undecided when
+  // it is checked (found by fuzz_reader: the whole file was lost).
+  void validate(const Node& n) {
+    try {
+      (void)to_ginac(n, d_.symbols);
+    } catch (const UndecidedLimit&) {
+    }
+  }
+  // The GiNaC form, where a declaration needs it (an assumption's sides): an undecided limit
+  // there is an input error at the expression.
+  GiNaC::ex converted(const Node& n) {
+    try {
+      return to_ginac(n, d_.symbols);
+    } catch (const UndecidedLimit& e) {
+      throw InputError(n.pos, std::string("this expression cannot be used in a declaration: ") + e.what(), n.length);
+    }
+  }
 
   // --- symbol / function -------------------------------------------------------------
   void symbol_statement(const Span& s, bool is_function) {
@@ -499,7 +516,7 @@ class Reader {
     sides.push_back(expression(s, from, s.text.size(), "an expression after '" +
                                                             s.text.substr(ops.back().at, ops.back().len) + "'"));
     std::vector<GiNaC::ex> ex;
-    for (const auto& n : sides) ex.push_back(validate(n));
+    for (const auto& n : sides) ex.push_back(converted(n));
     std::size_t b = 0, e = s.text.size();
     trim_range(s.text, b, e);
     for (std::size_t i = 0; i < ops.size(); ++i) {
@@ -748,10 +765,10 @@ class Reader {
     info.dimension = dimension_of(rhs, d_.symbols);
     info.has_dimension = true;
     try {
-      GiNaC::ex v = validate(rhs);
+      GiNaC::ex v = to_ginac(rhs, d_.symbols);
       if (params.empty() && v.info(GiNaC::info_flags::positive)) info.domain = Domain::positive();
-    } catch (const InputError&) {
-      throw;
+    } catch (const UndecidedLimit&) {
+      // a limit the engine cannot decide: no domain is inferred; uses of the name are undecided
     }
     d_.symbols.declare(std::move(info));
   }
