@@ -123,6 +123,7 @@ class Reader {
   std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
   std::map<std::string, std::size_t> defined_;   // labels defined so far -> step index
   std::set<std::string> used_names_;             // identifiers in the claims of the steps so far
+  std::string rule_name_;                        // the rule line being read (as written)
   std::optional<SourcePos> first_assume_;
   std::string current_label_;                    // the step being read
 
@@ -840,6 +841,7 @@ class Reader {
       fail(name_pos, "expected a rule name after 'by'; known rules: " + all_rules);
     std::string name = identifier(s, p, "a rule name");
     spec.written_name = name;
+    rule_name_ = name;
     if (contains(kRuleNames, name)) spec.name = name;
     else if (contains(kRewriteAliases, name)) spec.name = "rewrite";
     else fail(name_pos, "unknown rule '" + name + "'; known rules: " + all_rules, static_cast<int>(name.size()));
@@ -1078,6 +1080,31 @@ class Reader {
   RuleArg ref_or_equation(const Span& s, std::size_t b, std::size_t e) {
     if (plain_identifier(s, b, e)) return label_arg(s, b, e);
     RuleArg a = spanned(s, b, e);
+    // `y'(T0) = v0`, `y''(T0) = a0`: an initial value of a derivative. The primes are read
+    // here and blanked (`y (T0)` is the same call), so positions stay exact.
+    std::size_t q = b;
+    while (q < e && is_ident_char(s.text[q])) ++q;
+    std::size_t primes = q;
+    while (primes < e && s.text[primes] == '\'') ++primes;
+    if (q > b && is_ident_start(s.text[b]) && primes > q) {
+      std::size_t after = primes;
+      while (after < e && is_space(s.text[after])) ++after;
+      if (after >= e || s.text[after] != '(')
+        fail(s.at(primes), "expected '(' after the primes: a derivative's initial value is written y'(T0) = value");
+      if (rule_name_ != "solves_ode")
+        fail(a.pos, "an initial value of a derivative (y'(T0) = value) belongs to 'by solves_ode A wrt t with ...'",
+             a.length);
+      Span blanked = s;
+      for (std::size_t i = q; i < primes; ++i) blanked.text[i] = ' ';
+      a.prime_order = static_cast<int>(primes - q);
+      Relation rel = relation(blanked, b, e, "an initial value y'(T0) = value");
+      if (rel.sides.size() != 2)
+        fail(a.pos, "expected an initial value 'y'(T0) = value', found '" + a.label + "'", a.length);
+      for (const auto& side : rel.sides) validate(side);
+      a.kind = RuleArg::Kind::Equation;
+      a.equation = std::move(rel);
+      return a;
+    }
     Relation rel = relation(s, b, e, "a label or 'x = value'");
     if (rel.sides.size() != 2)
       fail(a.pos, "expected a label or an equation 'x = value', found '" + a.label + "'", a.length);

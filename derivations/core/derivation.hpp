@@ -21,6 +21,7 @@ struct RuleArg {
   Node value;                // Value: e.g. a limit point or lower bound
   SourcePos pos;
   int length = 1;
+  int prime_order = 0;       // Equation `y'(T0) = v0` (1), `y''(T0) = a0` (2): a derivative's value
 };
 
 // The rule line: `by NAME ...` parsed into named argument groups. Which groups exist depends

@@ -1,6 +1,6 @@
-// `by solves_ode A wrt t [with y(T0) = value, ...]`: the claim `y(t) = G` solves the ODE A: its
-// residual with y and its derivatives (up to the fourth) replaced by G's vanishes, and G meets
-// every initial condition.
+// `by solves_ode A wrt t [with y(T0) = value, y'(T0) = v0, ...]`: the claim `y(t) = G` solves
+// the ODE A: its residual with y and its derivatives (up to the fourth) replaced by G's vanishes,
+// and G meets every initial condition (a prime: that derivative of G at T0).
 #include "derivations/core/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 
@@ -43,12 +43,20 @@ Verdict solves_ode(StepContext& c, const Relation& claim) {
       c.fail(w.pos, "expected an initial condition 'y(T0) = value' after 'with'", w.length);
     ex at = c.conv(l.args[0]);
     ex lhs = c.conv(l);
-    if (!lhs.is_equal(Y.subs(t == at)))
-      c.fail(w.pos,
-             "the initial condition must be for the claimed function, e.g. '" + c.text(Y.subs(t == at)) + " = value'",
-             w.length);
-    Verdict v = prove_equal(G.subs(t == at), c.conv(w.equation.sides[1]), symbols, c.opt);
-    v.method = prefix_method("initial condition", v.method);
+    const std::string primes(static_cast<std::size_t>(w.prime_order), '\'');
+    if (!lhs.is_equal(Y.subs(t == at))) {
+      std::string y = c.text(Y.subs(t == at));
+      auto paren = y.find('(');
+      if (paren != std::string::npos) y.insert(paren, primes);
+      c.fail(w.pos, "the initial condition must be for the claimed function, e.g. '" + y + " = value'", w.length);
+    }
+    // y^(k)(T0) = value: the k-th derivative of the claimed solution at T0
+    ex Gk = G;
+    for (int k = 0; k < w.prime_order; ++k) Gk = Gk.diff(ts);
+    Verdict v = prove_equal(Gk.subs(t == at), c.conv(w.equation.sides[1]), symbols, c.opt);
+    v.method = prefix_method(w.prime_order ? "initial condition (derivative of order " + std::to_string(w.prime_order) + ")"
+                                           : "initial condition",
+                             v.method);
     all.add(v, "initial condition " + w.label);
   }
   // the middle sides of a chain y(t) = G1 = G

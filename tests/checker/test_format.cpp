@@ -203,6 +203,16 @@ TEST_CASE("limit points carry a direction; oo, -oo and undefined are limit value
   // whole file was lost with "reading this file did not finish").
   CHECK(error_of("symbol m : positive [1]\na: y = limit((m/x - 1)*y/(m/x), x, oo)\n    by given\n") == "no error");
   CHECK(error_of("assume limit((x - 1)*y, x, oo) > 0\n").find("2:8 this expression cannot be used in a declaration") == 0);
+  // y'(T0) = value: a derivative's initial value, for solves_ode only.
+  {
+    dc::Derivation o = dc::parse_derivation(dc::SourceText{
+        "o.dc", "symbol t : real [1]\nfunction x(t) : real [1]\node: diff(x(t), t, 2) = -x(t)\n    by given\n"
+                "s: x(t) = sin(t)\n    by solves_ode ode wrt t with x(0) = 0, x''(0) = 0\n"});
+    REQUIRE(o.find("s")->rule.with.size() == 2);
+    CHECK(o.find("s")->rule.with[0].prime_order == 0);
+    CHECK(o.find("s")->rule.with[1].prime_order == 2);
+  }
+  CHECK(error_of("function f(x) : real [1]\na: f(x) = x\n    by rewrite with f'(0) = 1\n").find("4:21 an initial value of a derivative") == 0);
   // A declared symbol named undefined keeps its meaning.
   CHECK(error_of("symbol undefined : real [1]\na: 1/x = undefined\n    by limit x -> 0\n") == "no error");
 }
