@@ -8,6 +8,7 @@ namespace dc {
 using GiNaC::ex;
 
 std::string big_o_text(const GiNaC::symbol& x, const ex& point, int at_infinity, int order, const SymbolTable& ctx) {
+  if (order == 0) return "O(1)";
   if (at_infinity != 0)
     return "O(" + x.get_name() + "^" + std::to_string(-order) + ") as " + x.get_name() + " -> " +
            (at_infinity > 0 ? "oo" : "-oo");
@@ -28,7 +29,7 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
   const ex gauge = at_infinity != 0 ? GiNaC::pow(x, -order) : GiNaC::pow(x - point, order);
   const ex quotient = remainder / gauge;
   const std::string o = big_o_text(x, point, at_infinity, order, ctx);
-  const std::string over = at_infinity != 0 ? "(lhs - rhs)*" + x.get_name() + "^" + std::to_string(order)
+  const std::string over = order == 0 ? std::string("lhs - rhs") : at_infinity != 0 ? "(lhs - rhs)*" + x.get_name() + "^" + std::to_string(order)
                                             : "(lhs - rhs)/" + o.substr(2, o.size() - 3);
   Verdict v;
   v.method = "remainder / gauge via limit";

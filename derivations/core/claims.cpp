@@ -323,6 +323,7 @@ class ClaimLine {
     std::vector<AssumptionItem> items = assume_items(domains);
     std::vector<const Node*> exprs;
     for (auto& [k, n] : nodes) (void)k, exprs.push_back(&n);
+    if (big_o_) exprs.push_back(&*big_o_);
     if (point_node_ && !point_infinite_) exprs.push_back(&*point_node_);
     std::vector<Node> initial_nodes;
     if (kind == "solves_ode") initial_nodes = initial_values();
@@ -419,11 +420,21 @@ class ClaimLine {
     }
     if (kind == "series") {
       // lhs - rhs = O((var - point)^order) as var -> point (from "dir"): big_o.hpp.
-      if (!j_.contains("order") || !j_.at("order").is_number_integer())
-        throw LineError{"a series claim needs an integer field 'order' (lhs - rhs = O((var - point)^order))"};
-      long long order = j_.at("order").get<long long>();
-      if (order < -1000 || order > 1000) throw LineError{"field 'order' must be between -1000 and 1000"};
       ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+      if (j_.contains("order") && !j_.at("order").is_number_integer())
+        throw LineError{"field 'order' must be an integer (lhs - rhs = O((var - point)^order))"};
+      if (!j_.contains("order") && !big_o_)
+        throw LineError{"a series claim needs an integer field 'order' (lhs - rhs = O((var - point)^order)) or an "
+                        "order term in the rhs ('x - x^3/6 + O(x^5)')"};
+      long long order = j_.contains("order") ? j_.at("order").get<long long>() : 0;
+      if (big_o_) {
+        int from_term = order_of_big_o(x, p);
+        if (j_.contains("order") && from_term != order)
+          throw LineError{"field 'order' is " + std::to_string(order) + " but the rhs ends in O(" + to_text(*big_o_) +
+                          "), order " + std::to_string(from_term)};
+        order = from_term;
+      }
+      if (order < -1000 || order > 1000) throw LineError{"field 'order' must be between -1000 and 1000"};
       int dir = limit_direction();
       if (point_infinite_ && dir != 0) throw LineError{"field 'dir' goes with a finite point"};
       return remainder_is_big_o(lhs - rhs, x, p, point_infinite_, dir, static_cast<int>(order), table_);
@@ -481,6 +492,7 @@ class ClaimLine {
   const ProveOptions& opt_;
   SymbolTable table_;
   std::optional<Node> point_node_;
+  std::optional<Node> big_o_;   // series: the argument of an O(...) term taken off the rhs
   int point_infinite_ = 0;
   int rhs_infinite_ = 0;
   bool rhs_undefined_ = false;   // limit: "rhs": "undefined" (the limit does not exist)
@@ -514,7 +526,47 @@ class ClaimLine {
         return parse_field(f, "0");
       }
     }
-    return parse_field(f, t);
+    Node n = parse_field(f, t);
+    if (f == "rhs" && j_.value("kind", "") == "series") n = strip_big_o(n);
+    return n;
+  }
+
+  // series: a right-hand side may end in its order term, `x - x^3/6 + O(x^5)`, as other systems
+  // print it; the term is taken off and gives the order (checked against "order" if given).
+  static bool is_big_o(const Node& n) { return n.kind == NodeKind::Call && n.text == "O" && n.args.size() == 1; }
+  Node strip_big_o(const Node& n) {
+    auto found = [&](const Node& o) { big_o_ = o.args[0]; };
+    if (is_big_o(n)) {
+      found(n);
+      return parse_field("rhs", "0");
+    }
+    if ((n.kind == NodeKind::Add || n.kind == NodeKind::Sub) && !n.parenthesized) {
+      if (is_big_o(n.args[1])) {
+        found(n.args[1]);
+        return n.args[0];
+      }
+      if (n.kind == NodeKind::Add && is_big_o(n.args[0])) {
+        found(n.args[0]);
+        return n.args[1];
+      }
+    }
+    return n;
+  }
+
+  // The order N of an O(...) term: O((x - p)^N), O(x^N) at p = 0, O(x^-N) at infinity.
+  int order_of_big_o(const GiNaC::symbol& x, const ex& p) {
+    ex g = to_ginac(*big_o_, table_);
+    const ex base = point_infinite_ ? ex(x) : ex(x - p);
+    long n = 0;
+    if (g.is_equal(base)) n = 1;
+    else if (GiNaC::is_a<GiNaC::power>(g) && g.op(0).is_equal(base) && GiNaC::is_a<GiNaC::numeric>(g.op(1)) &&
+             GiNaC::ex_to<GiNaC::numeric>(g.op(1)).is_integer())
+      n = GiNaC::ex_to<GiNaC::numeric>(g.op(1)).to_long();
+    else if (point_infinite_ == 0 && g.is_equal(1)) n = 0;
+    else
+      throw LineError{"the order term must be " + std::string(point_infinite_ ? "O(var^-N)" : "O((var - point)^N)") +
+                      " for an integer N, got O(" + to_text(*big_o_) + ")"};
+    return static_cast<int>(point_infinite_ ? -n : n);
   }
 
   // limit: "dir": "+" (from above), "-" (from below); absent or "+-": two-sided.

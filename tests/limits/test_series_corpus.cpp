@@ -49,4 +49,12 @@ TEST_CASE("series claims: malformed order and direction are line errors", "[limi
                            "b.jsonl");
   CHECK(r.at("verdict") == "error");
   CHECK(r.at("error").get<std::string>().find("'dir' goes with a finite point") != std::string::npos);
+  // an order term and a different "order"; an order term that is not a power of (var - point)
+  r = dc::check_claim_line(R"J({"kind":"series","lhs":"sin(x)","rhs":"x + O(x^3)","var":"x","point":"0","order":5})J", 1,
+                           "b.jsonl");
+  CHECK(r.at("verdict") == "error");
+  CHECK(r.at("error").get<std::string>().find("but the rhs ends in O(x^3), order 3") != std::string::npos);
+  r = dc::check_claim_line(R"J({"kind":"series","lhs":"sin(x)","rhs":"x + O(sin(x))","var":"x","point":"0"})J", 1, "b.jsonl");
+  CHECK(r.at("verdict") == "error");
+  CHECK(r.at("error").get<std::string>().find("the order term must be") != std::string::npos);
 }
