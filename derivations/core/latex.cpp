@@ -139,6 +139,14 @@ class Writer {
         return join(head) + " " + frac(join(rest), top(den));
       }
     }
+    // A leading minus stands before the fraction: -k/m is -\frac{k}{m}, -m1*v1/m2 is
+    // -\frac{m_1 v_1}{m_2}, not \frac{-k}{m}.
+    if (num.kind == NodeKind::Neg && !num.parenthesized) return "-" + frac(top(num.args[0]), top(den));
+    if (fs.size() > 1 && fs[0]->kind == NodeKind::Neg && !fs[0]->parenthesized) {
+      std::vector<const Node*> rest = fs;
+      rest[0] = &fs[0]->args[0];
+      if (!needs_group_as_factor(*rest[0], true)) return "-" + frac(join(rest), top(den));
+    }
     return frac(top(num), top(den));
   }
 
@@ -161,6 +169,15 @@ class Writer {
 
   std::string power(const Node& n) {
     const Node& b = n.args[0];
+    // sin(x)^2 is \sin^{2} x (\sin^{2}\frac{\theta}{2}), as textbooks write powers of functions
+    if (const char* t = b.kind == NodeKind::Call && !b.parenthesized && b.args.size() == 1 ? trig_tex(b.text) : nullptr;
+        t && n.args[1].kind == NodeKind::Number && !n.args[1].parenthesized &&
+        n.args[1].text.find_first_not_of("0123456789") == std::string::npos) {
+      const Node& a = b.args[0];
+      std::string arg = (is_atom(a) || a.kind == NodeKind::Div) && !a.parenthesized ? " " + top(a)
+                                                                                    : "\\left(" + top(a) + "\\right)";
+      return std::string(t) + "^{" + n.args[1].text + "}" + arg;
+    }
     std::string base;
     if (b.kind == NodeKind::Symbol && !b.parenthesized) {
       base = symbol(b.text);
@@ -418,7 +435,8 @@ class DocumentWriter {
     out += tagged ? "\\begin{equation}\n" : "\\begin{equation*}\n";
     out += aligned ? "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}"
                    : latex_relation(claim, d.symbols, false);
-    if (s.erratum) out += "\\footnotemark";
+    // the mark hangs on a word: after an equation it would read as an exponent ("gt¹")
+    if (s.erratum) out += "\\qquad\\text{(erratum\\footnotemark)}";
     if (opt_.mark_unchecked && r && !step_checked_ok(*r))
       out += "\\qquad\\text{\\textbf{NOT CHECKED: " + latex_escape_text(std::string(to_string(r->verdict.kind))) +
              (r->verdict.holds() ? " with errors" : "") + "}}";

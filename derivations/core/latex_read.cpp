@@ -107,7 +107,8 @@ class Reader {
       if (peek() == '&') { ++i_; continue; }
       if (starts("\\\\")) { i_ += 2; continue; }
       if (accept("\\begin{aligned}") || accept("\\end{aligned}") || accept("\\notag") ||
-          accept("\\footnotemark"))
+          accept("\\footnotemark") || accept("\\qquad\\text{(erratum\\footnotemark)}") ||
+          accept("\\qquad\\text{(erratum)}"))
         continue;
       if (accept("\\tag")) {
         brace_group_raw();
@@ -392,6 +393,13 @@ class Reader {
         {"\\arcsin", "asin"}, {"\\arccos", "acos"}, {"\\arctan", "atan"}};
     for (const auto& [tex, name] : kFuncs) {
       if (!accept(tex)) continue;
+      // \sin^{2} x: a power of the function's value
+      std::optional<Node> exponent;
+      skip_ws();
+      if (peek() == '^') {
+        expect_char('^');
+        exponent = braced_expr();
+      }
       std::vector<Node> a;
       if (accept("\\left(")) {
         Node n = expr();
@@ -400,6 +408,7 @@ class Reader {
       } else {
         a.push_back(primary());
       }
+      if (exponent) return bin(NodeKind::Pow, call(name, std::move(a)), std::move(*exponent));
       return call(name, std::move(a));
     }
     if (accept("\\lim")) {
@@ -519,6 +528,7 @@ std::vector<LatexDisplay> extract_latex_displays(const std::string& doc) {
       s.erase(k, close - k + 1);
     }
     if (s.find("\\footnotemark") != std::string::npos) d.footnote = true;
+    strip(s, "\\qquad\\text{(erratum\\footnotemark)}");
     strip(s, "\\footnotemark");
     strip(s, "\\notag");
     // the gather line break after the display

@@ -8,7 +8,9 @@
 #include <string>
 #include <unistd.h>
 
+#include "derivations/core/expr.hpp"
 #include "derivations/core/functions.hpp"
+#include "derivations/core/latex.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/symbols.hpp"
 
@@ -159,4 +161,25 @@ TEST_CASE("printer: byte-identical output in separate processes", "[latex][print
   CHECK(outputs[0] == outputs[1]);
   CHECK(outputs[0] == outputs[2]);
   CHECK(outputs[0] == corpus_text(false));
+}
+
+TEST_CASE("latex writer: the author's tree typeset as a lecturer would", "[latex][printer]") {
+  dc::SymbolTable t;
+  for (const char* n : {"k", "m", "x", "theta", "L", "m1", "v1", "m2", "A"}) {
+    dc::SymbolInfo info;
+    info.name = n;
+    info.sym = GiNaC::realsymbol(n);
+    t.declare(info);
+  }
+  auto tex = [&](const char* e) { return dc::latex_expression(dc::parse_expression(e, dc::SourcePos{"<t>", 1, 1}), t); };
+  // a leading minus stands before the fraction
+  CHECK(tex("-k/m*x") == "-\\frac{k}{m} x");
+  CHECK(tex("-1/2*k*A^2") == "-\\frac{1}{2} k A^{2}");
+  CHECK(tex("-m1*v1/m2") == "-\\frac{m_1 v_1}{m_2}");
+  CHECK(tex("(-k)/m") == "\\frac{-k}{m}");   // the author's own parentheses: kept as written
+  // powers of trigonometric functions
+  CHECK(tex("sin(theta/2)^2") == "\\sin^{2} \\frac{\\theta}{2}");
+  CHECK(tex("2*L*sin(theta)^2") == "2 L \\sin^{2} \\theta");
+  CHECK(tex("cos(theta + x)^2") == "\\cos^{2}\\left(\\theta + x\\right)");
+  CHECK(tex("sin(theta)^(1/2)") == "\\left(\\sin \\theta\\right)^{\\frac{1}{2}}");
 }
