@@ -408,6 +408,9 @@ class DocumentWriter {
     for (std::size_t i = 0; i < d.steps.size(); ++i) {
       const Step& s = d.steps[i];
       const StepResult* r = checks && i < checks->results.size() ? &checks->results[i] : nullptr;
+      // A stable rewrite (`stable LABEL "regime"`) is for computing, not for reading: the
+      // handout shows the form it stands for; --annotate shows both.
+      if (s.stable_of && !opt_.annotate) continue;
       bool unchecked = opt_.mark_unchecked && r && !step_checked_ok(*r);
       if (!opt_.annotate && !s.erratum && !unchecked) {
         run.push_back(&s);

@@ -63,9 +63,13 @@ TEST_CASE("latex round trip: every handout equation reads back equal to its sour
     std::string tex = dc::write_latex(d, opt);
     auto displays = dc::extract_latex_displays(tex);
     CAPTURE(file, annotate);
-    REQUIRE(displays.size() == d.steps.size());
+    // every step is displayed, except stable rewrites in the plain handout
+    std::vector<const dc::Step*> shown;
+    for (const auto& s : d.steps)
+      if (annotate || !s.stable_of) shown.push_back(&s);
+    REQUIRE(displays.size() == shown.size());
     for (std::size_t i = 0; i < displays.size(); ++i) {
-      const dc::Step& s = d.steps[i];
+      const dc::Step& s = *shown[i];
       const auto& disp = displays[i];
       CAPTURE(s.label, disp.latex);
       REQUIRE(disp.label == s.label);
