@@ -482,6 +482,8 @@ class ClaimLine {
       }
     }
     if (!initial_nodes.empty()) v.method += ", initial conditions";
+    v.side_conditions = side_conditions_of_sides({&nodes.at("solution")}, table_);
+    require_solution_without_singularities(v, x.get_name());
     return v;
   }
 

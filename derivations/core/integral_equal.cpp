@@ -123,7 +123,10 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
 
   // 2. G as an antiderivative in the upper limit.
   std::string symbolic_note;
-  if (GiNaC::is_a<GiNaC::symbol>(b) && !f.has(b) && !a.has(b) && continuous_everywhere(f, x)) {
+  // Both f (in x) and G (in b) must be continuous: G = exp(b) + atan(1/b) + atan(b) has the
+  // derivative exp(b) wherever it is defined, but jumps by pi at b = 0.
+  if (GiNaC::is_a<GiNaC::symbol>(b) && !f.has(b) && !a.has(b) && continuous_everywhere(f, x) &&
+      continuous_everywhere(G, GiNaC::ex_to<GiNaC::symbol>(b))) {
     const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
     Verdict d = prove_equal(G.diff(bs), f.subs(x == b), table, opt);
     if (d.kind == VerdictKind::Proved) {

@@ -1,6 +1,8 @@
 // prove_equal: the cascade that decides whether two expressions are equal (see prove.hpp).
 #include "derivations/core/prove.hpp"
 
+#include <cctype>
+
 #include <algorithm>
 #include <functional>
 #include <cmath>
@@ -415,6 +417,33 @@ void require_defined_on_domain(Verdict& v) {
     v.rhs_value.clear();
     v.detail = "not defined on the whole declared domain: " + sc.what + " (" + sc.reason + ") " + sc.evidence +
                "; restrict the declarations or add an assumption";
+    return;
+  }
+}
+
+void require_solution_without_singularities(Verdict& v, const std::string& var) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status == SideCondition::Status::Guaranteed) continue;
+    // A condition on a declared function's values (log(mr(t)/m0) with mr declared positive,
+    // which the domains do not reach) is the author's: declared functions are taken to be
+    // smooth, as in the continuity test of integrals.
+    if (sc.evidence.find("abstract function") != std::string::npos) continue;
+    bool mentions = false;   // the condition names the independent variable (as a whole word)
+    for (std::size_t p = sc.what.find(var); p != std::string::npos && !mentions; p = sc.what.find(var, p + 1)) {
+      auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+      bool before = p == 0 || !ident(sc.what[p - 1]);
+      bool after = p + var.size() >= sc.what.size() || !ident(sc.what[p + var.size()]);
+      mentions = before && after;
+    }
+    if (!mentions) continue;
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the claimed solution may be singular inside the domain (" + sc.what + ", " + sc.reason + ", " +
+               (sc.status == SideCondition::Status::Violated ? "fails " + sc.evidence : "is not guaranteed by the declarations") +
+               "): the residual and the initial values prove it only up to the "
+               "first singularity, and a closed form can jump there (atan(1/" + var + ") + atan(" + var +
+               ") has derivative 0 but is not constant); restrict the domain or add an assumption";
+    v.detail = v.reason;
     return;
   }
 }

@@ -60,6 +60,12 @@ std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTa
 // of the domain where a side is certainly undefined), a verdict that holds becomes Refuted
 // with that point as the counterexample. Conditions that are only not guaranteed stay warnings.
 void require_defined_on_domain(Verdict& v);
+// An ODE solution y = G proved by its residual and initial values: if a side condition of G
+// that involves the independent variable `var` is not guaranteed (G may be singular inside the
+// domain), the verdict becomes undecided — past a singularity G need not be the solution, and a
+// G that jumps (atan(1/t) + atan(t)) passes the residual test. Conditions on the values of
+// declared functions are left to the author (declared functions are taken to be smooth).
+void require_solution_without_singularities(Verdict& v, const std::string& var);
 
 // Do the declared domains and constraints admit at least one point? (An empty set of
 // assumptions would let anything follow.) Returns an empty string when satisfiable (a point

@@ -169,6 +169,10 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   add_claim_side_conditions(d, s, claim, res);
   // A claim must hold on the whole declared domain (premises only warn).
   if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
+  // An ODE solution proved by residual and initial values holds only up to a singularity.
+  const bool integral_claim = !claim.sides.empty() && claim.sides[0].kind == NodeKind::Call && claim.sides[0].text == "integral";
+  if ((s.rule.name == "solves_ode" || (s.rule.name == "integrate" && !integral_claim)) && s.rule.var)
+    require_solution_without_singularities(res.verdict, s.rule.var->label);
   if (s.stable_of) check_stable_form(d, s, opt, res);
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;

@@ -149,6 +149,8 @@ TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]"
       {R"J({"kind":"equal","lhs":"integral(1/x, x, 1, b)","rhs":"log(b)","assumptions":{"b":"positive"}})J", "holds_numerically", ""},
       // 1/x across 0 diverges: never proved (GiNaC's eval_integ would say log(b) - log(-1))
       {R"J({"kind":"equal","lhs":"integral(1/x, x, -1, b)","rhs":"log(b^2)/2","assumptions":{"b":"positive"}})J", "undecided", ""},
+      {R"J({"kind":"equal","lhs":"integral(exp(x), x, -1, b)","rhs":"exp(b) - exp(-1) + atan(1/b) + atan(b) + pi/2"})J", "refuted",
+       "rigorous quadrature"},
       {R"J({"kind":"equal","lhs":"2*integral(x, x, 0, 1)","rhs":"1"})J", "undecided", "integral"},
       {R"J({"kind":"equal","lhs":"integral(exp(-x^2), x, 0, oo)","rhs":"sqrt(pi)/2"})J", "undecided", "integral"},
   }));
@@ -156,4 +158,24 @@ TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]"
   CAPTURE(x.line, r.dump());
   CHECK(r.at("verdict") == x.verdict);
   CHECK(r.value("method", "").find(x.method) != std::string::npos);
+}
+
+TEST_CASE("an ODE solution that may be singular inside the domain is not proved", "[claims][soundness][ode]") {
+  // y' = 0, y(-1) = 0: the solution is 0. atan(1/t) + atan(t) + pi/2 has derivative 0 and the
+  // right initial value, but equals pi for t > 0 (it jumps at t = 0). Before: proved.
+  auto r = dc::check_claim_line(
+      R"J({"kind":"solves_ode","lhs":"yp","rhs":"0","var":"t","solution":"atan(1/t) + atan(t) + pi/2","initial":[{"at":"-1","order":0,"value":"0"}]})J",
+      1, "b.jsonl");
+  CAPTURE(r.dump());
+  CHECK(r.at("verdict") == "undecided");
+  CHECK(r.value("reason", "").find("singular inside the domain (t != 0") != std::string::npos);
+  // A singularity in a parameter only does not block; one the declarations exclude does not either.
+  r = dc::check_claim_line(
+      R"J({"kind":"solves_ode","lhs":"yp","rhs":"-y/tau","var":"t","solution":"y0*exp(-t/tau)","initial":[{"at":"0","order":0,"value":"y0"}],"assumptions":{"tau":"positive"}})J",
+      1, "b.jsonl");
+  CHECK(r.at("verdict") == "proved");
+  r = dc::check_claim_line(
+      R"J({"kind":"solves_ode","lhs":"yp","rhs":"1/t","var":"t","solution":"log(t)","initial":[{"at":"1","order":0,"value":"0"}],"assumptions":{"t":"positive"}})J",
+      1, "b.jsonl");
+  CHECK(r.at("verdict") == "proved");
 }
