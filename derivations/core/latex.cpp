@@ -155,8 +155,14 @@ class Writer {
     if (n.kind == NodeKind::Div && !n.parenthesized) {
       const Node& a = n.args[0];
       const Node& b = n.args[1];
-      bool na = a.kind == NodeKind::Add || a.kind == NodeKind::Sub || a.kind == NodeKind::Neg;
       bool nb = !(is_atom(b) || b.kind == NodeKind::Pow || b.kind == NodeKind::Call);
+      // e^{-t/\tau}, not e^{(-t)/\tau}: a leading minus stands before the quotient
+      if (a.kind == NodeKind::Neg && !a.parenthesized) {
+        const Node& p = a.args[0];
+        bool np = p.kind == NodeKind::Add || p.kind == NodeKind::Sub || p.kind == NodeKind::Neg;
+        return "-" + inline_operand(p, np) + "/" + inline_operand(b, nb);
+      }
+      bool na = a.kind == NodeKind::Add || a.kind == NodeKind::Sub || a.kind == NodeKind::Neg;
       return inline_operand(a, na) + "/" + inline_operand(b, nb);
     }
     return top(n);

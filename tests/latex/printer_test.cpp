@@ -177,6 +177,7 @@ TEST_CASE("latex writer: the author's tree typeset as a lecturer would", "[latex
   CHECK(tex("-1/2*k*A^2") == "-\\frac{1}{2} k A^{2}");
   CHECK(tex("-m1*v1/m2") == "-\\frac{m_1 v_1}{m_2}");
   CHECK(tex("(-k)/m") == "\\frac{-k}{m}");   // the author's own parentheses: kept as written
+  CHECK(tex("exp(-x/k)") == "\\mathrm{e}^{-x/k}");
   // powers of trigonometric functions
   CHECK(tex("sin(theta/2)^2") == "\\sin^{2} \\frac{\\theta}{2}");
   CHECK(tex("2*L*sin(theta)^2") == "2 L \\sin^{2} \\theta");
