@@ -128,6 +128,10 @@ bool is_memory_message(const char* what) {
   if (devnull >= 0) ::dup2(devnull, STDOUT_FILENO);
   rlimit core{0, 0};
   setrlimit(RLIMIT_CORE, &core);
+#ifndef DERIVCHECK_SANITIZER
+  // Under AddressSanitizer the address space cannot be limited (ASan reserves terabytes of
+  // shadow memory: every worker would fail its first mmap); the memory budget is not enforced
+  // in the sanitizer build (tools/sanitize.sh), the time budget is.
   if (budget.memory_bytes > 0) {
     rlimit as{};
     if (getrlimit(RLIMIT_AS, &as) == 0) {
@@ -137,6 +141,7 @@ bool is_memory_message(const char* what) {
       setrlimit(RLIMIT_AS, &as);
     }
   }
+#endif
   static char alt_stack[1 << 16];
   stack_t ss{};
   ss.ss_sp = alt_stack;
