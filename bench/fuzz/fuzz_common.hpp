@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "derivations/core/expr.hpp"
 #include "derivations/core/source.hpp"
 
 namespace dc_fuzz {
@@ -26,6 +27,21 @@ inline void touch(const dc::InputError& e) {
 [[noreturn]] inline void fail(const char* what, const std::string& a, const std::string& b = {}) {
   std::fprintf(stderr, "fuzz property failed: %s\n  [%s]\n  [%s]\n", what, a.c_str(), b.c_str());
   std::abort();
+}
+
+// The printer's contract: a printed tree reads back to the same text. The printed form may nest
+// deeper than the original (added parentheses), so the depth limits are relaxed for the re-read.
+inline void check_round_trip(const std::string& printed) {
+  dc::ParseLimits relaxed;
+  relaxed.max_depth = 1000;
+  relaxed.max_tree_depth = 20000;
+  relaxed.max_length = 1000000;
+  try {
+    dc::Relation again = dc::parse_relation(printed, dc::SourcePos{"<printed>", 1, 1}, relaxed);
+    if (dc::to_text(again) != printed) fail("to_text(parse(to_text(r))) != to_text(r)", printed, dc::to_text(again));
+  } catch (const dc::InputError& e) {
+    fail("to_text(r) does not parse", printed, e.format());
+  }
 }
 
 }  // namespace dc_fuzz

@@ -15,16 +15,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     dc_fuzz::touch(e);
     return 0;
   }
-  const std::string printed = dc::to_text(r);
-  dc::ParseLimits relaxed;   // the printed form may nest deeper (added parentheses)
-  relaxed.max_depth = 1000;
-  relaxed.max_tree_depth = 20000;
-  relaxed.max_length = 1000000;
-  try {
-    dc::Relation again = dc::parse_relation(printed, dc::SourcePos{"<printed>", 1, 1}, relaxed);
-    if (dc::to_text(again) != printed) dc_fuzz::fail("to_text(parse(to_text(r))) != to_text(r)", printed, dc::to_text(again));
-  } catch (const dc::InputError& e) {
-    dc_fuzz::fail("to_text(r) does not parse", printed, e.format());
-  }
+  dc_fuzz::check_round_trip(dc::to_text(r));
   return 0;
 }

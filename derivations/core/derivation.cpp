@@ -641,18 +641,16 @@ class Reader {
         if (!limit_value_side(step, side, d_.symbols)) validate_side(side);
     }
     step.names_result = names_new_quantity(step);
-    for (const Relation* r : {&step.claim, step.erratum ? &step.erratum->corrected : &step.claim})
-      for (const auto& side : r->sides) {
+    auto note_names = [&](const Relation& r) {
+      for (const auto& side : r.sides) {
         std::vector<const Node*> ids;
         collect_identifiers(side, ids);
         for (const Node* id : ids) used_names_.insert(id->text);
       }
-    for (const auto& w : step.rule.with)
-      for (const auto& side : w.equation.sides) {
-        std::vector<const Node*> ids;
-        collect_identifiers(side, ids);
-        for (const Node* id : ids) used_names_.insert(id->text);
-      }
+    };
+    note_names(step.claim);
+    if (step.erratum) note_names(step.erratum->corrected);
+    for (const auto& w : step.rule.with) note_names(w.equation);
     defined_[step.label] = d_.steps.size();
     d_.steps.push_back(std::move(step));
   }

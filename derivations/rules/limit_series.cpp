@@ -140,6 +140,18 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
   const std::string derived_text =
       does_not_exist ? "undefined" : value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
 
+  // A side that disagrees with what the helper found (a value, an infinity, or no limit).
+  auto refuted_by_limit = [&](const Node& written) {
+    Verdict v;
+    v.kind = VerdictKind::Refuted;
+    v.method = how;
+    v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
+                              : "the limit is " + derived_text + ", the claim says " + to_text(written);
+    v.lhs_value = to_text(written);
+    v.rhs_value = derived_text;
+    return v;
+  };
+
   // Each compared side of the claim against it
   Combiner all;
   for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
@@ -152,14 +164,7 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
       if (agrees) {
         all.add(proved(how, does_not_exist ? "the limit does not exist: " + dne_reason : std::string()), what);
       } else {
-        Verdict v;
-        v.kind = VerdictKind::Refuted;
-        v.method = how;
-        v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
-                                  : "the limit is " + derived_text + ", the claim says " + to_text(written);
-        v.lhs_value = to_text(written);
-        v.rhs_value = derived_text;
-        all.add(v, what);
+        all.add(refuted_by_limit(written), what);
       }
       continue;
     }
@@ -176,14 +181,7 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
     }
     if (does_not_exist || value_inf) {
       // A finite expression against a limit that is infinite or does not exist.
-      Verdict v;
-      v.kind = VerdictKind::Refuted;
-      v.method = how;
-      v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
-                                : "the limit is " + derived_text + ", the claim says " + to_text(written);
-      v.lhs_value = to_text(written);
-      v.rhs_value = derived_text;
-      all.add(v, what);
+      all.add(refuted_by_limit(written), what);
       continue;
     }
     Verdict v;
