@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Emits Handout 9 as LaTeX, compiles it with pdflatex and renders page 1 to
-# docs/img/handout9-page1.png (and the annotated version's page 1 to
-# docs/img/handout9-annotated-page1.png).
+# Emits Handout 9 as LaTeX, compiles it with pdflatex and renders to docs/img/:
+#   handout9-page1.png            page 1 (title, prose, the first chains)
+#   handout9-example.png          the page where the ballistic pendulum example starts
+#   handout9-annotated-page1.png  page 1 of the --annotate version
 # Usage: tools/render-latex.sh [path/to/derivcheck]     (default: build/derivcheck)
 # Needs pdflatex and pdftoppm (tools/install-deps.sh installs both).
 set -euo pipefail
@@ -16,8 +17,20 @@ sub="Every equation generated from derivations/handout9/*.dc and checked by deri
 "$cli" latex "$root/derivations/handout9" --title "$title" --subtitle "$sub" --annotate -o "$tmp/handout9-annotated.tex"
 mkdir -p "$root/docs/img"
 for name in handout9 handout9-annotated; do
-  (cd "$tmp" && pdflatex -halt-on-error -interaction=nonstopmode "$name.tex" > "$name.build.log" 2>&1) ||
+  (cd "$tmp" && pdflatex -halt-on-error -interaction=nonstopmode "$name.tex" > "$name.build.log" 2>&1 &&
+                pdflatex -halt-on-error -interaction=nonstopmode "$name.tex" > "$name.build.log" 2>&1) ||
     { echo "render-latex: pdflatex failed on $name.tex; see the log:" >&2; tail -20 "$tmp/$name.build.log" >&2; exit 1; }
   pdftoppm -r 100 -f 1 -l 1 -png -singlefile "$tmp/$name.pdf" "$root/docs/img/$name-page1"
   echo "render-latex: docs/img/$name-page1.png ($(pdfinfo "$tmp/$name.pdf" 2>/dev/null | awk '/^Pages/{print $2}') pages)" >&2
 done
+# the worked example: the first page whose text has the example's heading
+pages=$(pdfinfo "$tmp/handout9.pdf" | awk '/^Pages/{print $2}')
+for ((p = 1; p <= pages; ++p)); do
+  if pdftotext -f "$p" -l "$p" "$tmp/handout9.pdf" - | grep -qi "Example 9.5"; then
+    pdftoppm -r 100 -f "$p" -l "$p" -png -singlefile "$tmp/handout9.pdf" "$root/docs/img/handout9-example"
+    echo "render-latex: docs/img/handout9-example.png (page $p)" >&2
+    exit 0
+  fi
+done
+echo "render-latex: no page with Example 9.5 (ballistic pendulum)" >&2
+exit 1

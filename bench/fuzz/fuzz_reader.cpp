@@ -3,10 +3,13 @@
 // normalisation: BOM, CR/CRLF, UTF-8; statements, declarations, rule lines, expressions, label
 // references, symbol resolution) returns or throws InputError. For a file that parses, every
 // step's claim prints (to_text) and the printed claim reads again to the same text, and every
-// label a rule refers to names an earlier step. fuzz_dc_file continues into the GiNaC conversion
+// label a rule refers to names an earlier step. The file's text (headings, paragraphs) stands
+// in file order among the steps, and the whole file prints as LaTeX without an exception.
+// fuzz_dc_file continues into the GiNaC conversion
 // (about 10 inputs per second instead of thousands).
 #include "bench/fuzz/fuzz_common.hpp"
 #include "derivations/core/derivation.hpp"
+#include "derivations/core/latex.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 16384) return 0;
@@ -29,5 +32,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     dc_fuzz::check_round_trip(dc::to_text(s.claim));
   }
+  for (std::size_t i = 0; i < d.prose.size(); ++i) {
+    if (d.prose[i].before_step > d.steps.size()) dc_fuzz::fail("text placed after a step that does not exist", std::to_string(d.prose[i].before_step));
+    if (i && d.prose[i].before_step < d.prose[i - 1].before_step) dc_fuzz::fail("text out of file order", std::to_string(i));
+    if (d.prose[i].pieces.empty()) dc_fuzz::fail("a text statement with nothing in it", std::to_string(d.prose[i].pos.line));
+  }
+  std::string tex = dc::write_latex(d, dc::LatexOptions{});
+  if (tex.find("\\end{document}") == std::string::npos) dc_fuzz::fail("LaTeX output without its end", tex.substr(0, 200));
   return 0;
 }

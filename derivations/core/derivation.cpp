@@ -11,6 +11,7 @@
 #include <set>
 
 #include "derivations/core/io.hpp"
+#include "derivations/core/prose.hpp"
 #include "derivations/core/prove.hpp"
 #include "derivations/core/satisfiable.hpp"
 #include "derivations/core/units.hpp"
@@ -25,8 +26,8 @@ const std::vector<std::string> kRuleNames = {"given",  "definition", "rewrite", 
 const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
 const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
 const std::vector<std::string> kStatementKeywords = {"title", "section", "symbol", "function",
-                                                     "assume"};
-const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable"};
+                                                     "assume", "heading", "text", "remark", "figure"};
+const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable", "hide"};
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
@@ -152,6 +153,8 @@ class Reader {
           else if (c == '"') in_str = false;
         } else if (c == '"') {
           in_str = true;
+        } else if (c == '\\' && i + 1 < line.size() && line[i + 1] == '#') {
+          ++i;   // \# is a literal '#' (in text); not a comment
         } else if (c == '#') {
           for (std::size_t j = i; j < line.size(); ++j) line[j] = ' ';
           break;
@@ -266,6 +269,8 @@ class Reader {
         std::string str = string_literal(s, p, "a quoted " + w + ", e.g. " + w + " \"...\"");
         expect_end(s, p);
         (w == "title" ? d_.title : d_.section) = str;
+      } else if (w == "heading" || w == "figure" || w == "text" || w == "remark") {
+        prose_statement(w, s, {file(), st.first_line, 1});
       } else if (w == "symbol") {
         symbol_statement(s, false);
       } else if (w == "function") {
@@ -282,10 +287,37 @@ class Reader {
       std::string shown = w.empty() ? l.substr(0, utf8_length(l, 0)) : w;
       fail({file(), st.first_line, 1},
            "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
-           "or a step '[(TAG)] LABEL: CLAIM'",
+           "heading, text, remark, figure, or a step '[(TAG)] LABEL: CLAIM'",
            static_cast<int>(std::max<std::size_t>(1, shown.size())));
     }
     step_statement(st, h);
+  }
+
+  // heading "..." / figure "..." / text PARAGRAPH / remark PARAGRAPH (docs/format.md, "Text").
+  void prose_statement(const std::string& w, const Span& s, const SourcePos& pos) {
+    Prose pr;
+    pr.pos = pos;
+    pr.before_step = d_.steps.size();
+    if (w == "heading" || w == "figure") {
+      pr.kind = w == "heading" ? Prose::Kind::Heading : Prose::Kind::Figure;
+      std::size_t p = 0;
+      std::string str = string_literal(s, p, "a quoted " + std::string(w == "heading" ? "heading" : "caption") +
+                                                 ", e.g. " + w + " \"...\"");
+      expect_end(s, p);
+      if (str.find_first_not_of(' ') == std::string::npos) fail(s.at(0), "empty " + w + ": write its text between the quotes");
+      pr.pieces.push_back({ProsePiece::Kind::Text, str, {}});
+    } else {
+      pr.kind = w == "text" ? Prose::Kind::Paragraph : Prose::Kind::Remark;
+      std::size_t b = 0, e = s.text.size();
+      trim_range(s.text, b, e);
+      if (b >= e)
+        fail(pos, "empty " + w + ": write the paragraph after '" + w + "' or on the indented lines below it",
+             static_cast<int>(w.size()));
+      Span body = s.sub(b, e);
+      pr.pieces = parse_prose({body.text, body.pos, body.end}, [&](const Node& n) { validate_side(n); },
+                              [&](const SourcePos& p, const std::string& msg, int len) { fail(p, msg, len); });
+    }
+    d_.prose.push_back(std::move(pr));
   }
 
   // --- small lexical helpers on spans ----------------------------------------------------
@@ -596,6 +628,9 @@ class Reader {
         if (have_rule) fail(part.kw_pos, "a step has exactly one 'by' line; found a second one", 2);
         step.rule = rule_line(part.span, part.kw_pos);
         have_rule = true;
+      } else if (part.kw == "hide") {
+        expect_end(part.span, 0);
+        step.hidden = true;
       } else if (part.kw == "note") {
         std::size_t p = 0;
         step.notes.push_back(string_literal(part.span, p, "a quoted note, e.g. note \"...\""));

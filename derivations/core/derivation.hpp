@@ -68,6 +68,21 @@ struct Step {
   // of the chain with its rule (`V(t) = diff(X(t), t) = A*omega*cos(omega*t)`).
   bool names_result = false;
   std::string stable_regime;
+  bool hidden = false;       // `hide`: checked, but left out of the handout (--annotate shows it)
+};
+
+// Literate text between the steps (docs/format.md, "Text"): what `derivcheck latex` prints
+// around the equations. The checker ignores it.
+struct ProsePiece {
+  enum class Kind { Text, Math, Expr, Emph } kind = Kind::Text;
+  std::string text;          // Text/Emph: plain text; Math: TeX between $...$; Expr: as written
+  Node expr;                 // Expr: `m1*v1 + m2*v2`, typeset with the file's symbols
+};
+struct Prose {
+  enum class Kind { Heading, Paragraph, Remark, Figure } kind = Kind::Paragraph;
+  std::vector<ProsePiece> pieces;   // Heading, Figure: one Text piece (the title / caption)
+  SourcePos pos;
+  std::size_t before_step = 0;      // index of the step it stands before (steps.size(): after all)
 };
 
 struct Derivation {
@@ -76,6 +91,7 @@ struct Derivation {
   std::string section;
   SymbolTable symbols;
   std::vector<Step> steps;
+  std::vector<Prose> prose;  // in file order
 
   const Step* find(const std::string& label) const;
 

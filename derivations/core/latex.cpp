@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <stdexcept>
 
-#include "derivations/rules/check.hpp"
 
 namespace dc {
 namespace {
@@ -24,6 +23,8 @@ const char* trig_tex(const std::string& f) {
   if (f == "atan") return "\\arctan";
   return nullptr;
 }
+
+double width(const Node& n);
 
 class Writer {
  public:
@@ -208,6 +209,19 @@ class Writer {
     return out;
   }
 
+  // One notation per quantity: a declared function at its own parameters, x(t), prints as x
+  // (x(0) stays x(0)) unless another declared name prints as x too.
+  bool bare_function(const Node& n) {
+    const SymbolInfo* s = table_.find(n.text);
+    if (!s || !s->is_function || n.args.empty() || s->params.size() != n.args.size()) return false;
+    for (std::size_t i = 0; i < n.args.size(); ++i)
+      if (n.args[i].kind != NodeKind::Symbol || n.args[i].parenthesized || n.args[i].text != s->params[i]) return false;
+    std::string tex = symbol(n.text);
+    for (const auto& o : table_.all())
+      if (o.name != s->name && (o.tex.empty() ? default_tex_name(o.name) : o.tex) == tex) return false;
+    return true;
+  }
+
   // The "d f" of a derivative when f is a symbol or a declared function of the variable.
   bool simple_derivand(const Node& f, const Node& var, std::string* tex) {
     if (f.parenthesized) return false;
@@ -221,6 +235,45 @@ class Writer {
       return true;
     }
     return false;
+  }
+
+  // A side as rows no wider than `first` (the first row) and `rest` (the others): broken
+  // before its top-level + and - when it is too wide, continuation rows start "&\quad + ".
+  std::vector<std::string> broken_side(const Node& side, double first, double rest) {
+    std::vector<std::pair<char, const Node*>> ts;
+    if (!side.parenthesized) sum_terms(side, ts);
+    if (ts.size() < 2) return {top(side)};
+    std::vector<std::string> rows;
+    std::string row;
+    double w = 0, limit = first;
+    for (std::size_t i = 0; i < ts.size(); ++i) {
+      auto [sign, t] = ts[i];
+      std::string tex;
+      if (sign == 0) tex = operand(*t, false);
+      else if (sign == '+') tex = "+ " + operand(*t, t->kind == NodeKind::Neg);
+      else tex = "- " + operand(*t, t->kind == NodeKind::Add || t->kind == NodeKind::Sub || t->kind == NodeKind::Neg);
+      double tw = width(*t) + 2.5;
+      if (i > 0 && w + tw > limit) {
+        rows.push_back(row);
+        row = "&\\quad " + tex;
+        w = 3 + tw;
+        limit = rest;
+        continue;
+      }
+      row += (i ? " " : "") + tex;
+      w += tw;
+    }
+    rows.push_back(row);
+    return rows;
+  }
+
+  static void sum_terms(const Node& n, std::vector<std::pair<char, const Node*>>& out) {
+    if (!n.parenthesized && (n.kind == NodeKind::Add || n.kind == NodeKind::Sub)) {
+      sum_terms(n.args[0], out);
+      out.push_back({n.kind == NodeKind::Add ? '+' : '-', &n.args[1]});
+      return;
+    }
+    out.push_back({0, &n});
   }
 
   std::string call(const Node& n) {
@@ -257,6 +310,7 @@ class Writer {
              " \\, \\mathrm{d} " + top(n.args[1]);
     }
     if (is_builtin_function(f)) return "\\operatorname{" + f + "}\\left(" + args(n) + "\\right)";
+    if (bare_function(n)) return symbol(f);
     return symbol(f) + "(" + args(n) + ")";
   }
 
@@ -284,11 +338,6 @@ double width(const Node& n) {
     }
   }
   return 1;
-}
-
-std::string basename_of(const std::string& path) {
-  auto s = path.find_last_of('/');
-  return s == std::string::npos ? path : path.substr(s + 1);
 }
 
 // Append one UTF-8 code point's LaTeX text.
@@ -339,163 +388,6 @@ std::string hex4(std::uint32_t cp) {
   return s;
 }
 
-// What the handout shows for a step: a `by limit x -> p` step without `of` states
-// "f = L" meaning "f -> L as x -> p", so its first side is shown as the limit it means.
-Relation displayed_claim(const Step& s, const Relation& claim) {
-  if (s.rule.name != "limit" || !s.rule.into.empty() || claim.sides.size() < 2 || !s.rule.var || !s.rule.point)
-    return claim;
-  const Node& f = claim.sides[0];
-  if (f.kind == NodeKind::Call && f.text == "limit") return claim;
-  Relation shown = claim;
-  Node lim;
-  lim.kind = NodeKind::Call;
-  lim.text = "limit";
-  lim.pos = f.pos;
-  lim.args = {f, s.rule.var->value, s.rule.point->value};
-  if (s.rule.dir != 0) {
-    Node side;
-    side.kind = NodeKind::Symbol;
-    side.text = s.rule.dir > 0 ? "+" : "-";
-    lim.args.push_back(side);
-  }
-  shown.sides[0] = std::move(lim);
-  return shown;
-}
-
-std::string verdict_text(const StepResult& r) {
-  if (r.premise && r.verdict.holds()) return "$\\bullet$ premise";
-  std::string s;
-  switch (r.verdict.kind) {
-    case VerdictKind::Proved: s = "$\\checkmark$ proved"; break;
-    case VerdictKind::HoldsNumerically: s = "$\\checkmark$ holds numerically"; break;
-    case VerdictKind::Refuted: s = "$\\times$ refuted"; break;
-    case VerdictKind::Undecided: s = "? undecided"; break;
-  }
-  if (!r.verdict.method.empty()) s += " (" + latex_escape_text(r.verdict.method) + ")";
-  return s;
-}
-
-class DocumentWriter {
- public:
-  explicit DocumentWriter(const LatexOptions& o) : opt_(o) {}
-
-  std::string section(const Derivation& d, const CheckSummary* checks) {
-    std::string out;
-    std::string file = basename_of(d.source.name);
-    std::string heading = d.title.empty() ? file : d.title;
-    bool numbered_title = !heading.empty() && (std::isdigit(static_cast<unsigned char>(heading[0])) ||
-                                               heading.rfind("Example", 0) == 0);
-    std::string shown = latex_escape_text(heading);
-    if (!d.section.empty() && !numbered_title) shown = latex_escape_text(d.section) + "\\quad " + shown;
-    out += "% ---- " + file + "\n";
-    out += "\\section*{" + shown + "}\n";
-    out += "\\addcontentsline{toc}{section}{" + shown + "}\n\n";
-    // Without annotations, consecutive steps share one gather block (a handout's stack of
-    // equations); an erratum step (it carries a footnote) and annotated steps (margin notes)
-    // stand in an environment of their own.
-    std::vector<const Step*> run;
-    auto flush = [&] {
-      if (run.empty()) return;
-      out += "\\begin{gather}\n";
-      for (std::size_t i = 0; i < run.size(); ++i) {
-        const Step& s = *run[i];
-        const Relation claim = displayed_claim(s, s.claim);
-        out += "% " + s.label + " (" + file + ":" + std::to_string(s.pos.line) + ")\n";
-        if (latex_prefers_aligned(claim, d.symbols))
-          out += "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}";
-        else
-          out += latex_relation(claim, d.symbols, false);
-        out += s.tag.empty() ? " \\notag" : " \\tag{" + latex_escape_text(s.tag) + "}";
-        out += i + 1 < run.size() ? " \\\\\n" : "\n";
-      }
-      out += "\\end{gather}\n\n";
-      run.clear();
-    };
-    for (std::size_t i = 0; i < d.steps.size(); ++i) {
-      const Step& s = d.steps[i];
-      const StepResult* r = checks && i < checks->results.size() ? &checks->results[i] : nullptr;
-      // A stable rewrite (`stable LABEL "regime"`) is for computing, not for reading: the
-      // handout shows the form it stands for; --annotate shows both.
-      if (s.stable_of && !opt_.annotate) continue;
-      bool unchecked = opt_.mark_unchecked && r && !step_checked_ok(*r);
-      if (!opt_.annotate && !s.erratum && !unchecked) {
-        run.push_back(&s);
-        continue;
-      }
-      flush();
-      out += step(d, s, r);
-    }
-    flush();
-    return out;
-  }
-
-  std::string step(const Derivation& d, const Step& s, const StepResult* r) {
-    std::string out;
-    const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
-    out += "% " + s.label + " (" + basename_of(d.source.name) + ":" + std::to_string(s.pos.line) + ")\n";
-    if (opt_.annotate) {
-      std::string note = "\\texttt{" + latex_escape_text(s.label) + "}: by " + latex_escape_text(rule_text(s));
-      if (r) note += "\\\\ " + verdict_text(*r);
-      out += "\\marginpar{\\footnotesize\\raggedright " + note + "}%\n";
-      for (const auto& n : s.notes) out += "\\noindent{\\small " + latex_escape_text(n) + "}\n";
-    }
-    bool aligned = latex_prefers_aligned(claim, d.symbols);
-    bool tagged = !s.tag.empty();
-    out += tagged ? "\\begin{equation}\n" : "\\begin{equation*}\n";
-    out += aligned ? "\\begin{aligned}\n" + latex_relation(claim, d.symbols, true) + "\n\\end{aligned}"
-                   : latex_relation(claim, d.symbols, false);
-    // the mark hangs on a word: after an equation it would read as an exponent ("gt¹")
-    if (s.erratum) out += "\\qquad\\text{(erratum\\footnotemark)}";
-    if (opt_.mark_unchecked && r && !step_checked_ok(*r))
-      out += "\\qquad\\text{\\textbf{NOT CHECKED: " + latex_escape_text(std::string(to_string(r->verdict.kind))) +
-             (r->verdict.holds() ? " with errors" : "") + "}}";
-    if (tagged) out += "\n\\tag{" + latex_escape_text(s.tag) + "}";
-    out += tagged ? "\n\\end{equation}\n" : "\n\\end{equation*}\n";
-    if (s.erratum) {
-      Writer w(d.symbols);
-      std::string printed;
-      for (std::size_t i = 0; i < s.claim.sides.size(); ++i)
-        printed += (i ? " = " : "") + w.top(s.claim.sides[i]);
-      out += "\\footnotetext{Corrected: the source prints $" + printed + "$; " +
-             latex_escape_text(s.erratum->why) + ".}\n";
-    }
-    out += "\n";
-    return out;
-  }
-
-  static std::string rule_text(const Step& s) {
-    if (!s.rule.text.empty()) {
-      std::string t = s.rule.text;
-      if (t.rfind("by ", 0) == 0) t = t.substr(3);
-      return t;
-    }
-    return s.rule.written_name.empty() ? s.rule.name : s.rule.written_name;
-  }
-
-  std::string preamble(const std::string& title) {
-    std::string out;
-    out += "% Generated by derivcheck latex. Do not edit: regenerate from the .dc files.\n";
-    out += "\\documentclass[11pt,a4paper]{article}\n";
-    out += "\\usepackage{amsmath,amssymb}\n\\allowdisplaybreaks\n";
-    if (opt_.annotate)
-      out += "\\usepackage[left=22mm,right=62mm,top=25mm,bottom=25mm,marginparwidth=48mm,marginparsep=6mm]{geometry}\n";
-    else
-      out += "\\usepackage[margin=25mm]{geometry}\n";
-    out += "\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{4pt}\n\\setlength{\\jot}{6pt}\n";
-    out += "\\title{" + latex_escape_text(title) + "}\n";
-    out += "\\author{}\n\\date{" + (opt_.subtitle.empty() ? std::string() : latex_escape_text(opt_.subtitle)) + "}\n";
-    out += "\\begin{document}\n\\maketitle\n\n";
-    return out;
-  }
-
-  std::string fragment_header() {
-    return "% Generated by derivcheck latex --fragment. Needs \\usepackage{amsmath,amssymb}.\n\n";
-  }
-
- private:
-  const LatexOptions& opt_;
-};
-
 }  // namespace
 
 std::string latex_expression(const Node& n, const SymbolTable& table) { return Writer(table).top(n); }
@@ -518,6 +410,33 @@ std::string latex_relation(const Relation& r, const SymbolTable& table, bool ali
   }
   return out;
 }
+
+std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit) {
+  Writer w(table);
+  if (r.sides.size() == 1) {
+    std::vector<std::string> rows = w.broken_side(r.sides[0], limit, limit - 3);
+    rows[0] = "& " + rows[0];
+    return rows;
+  }
+  double total = 0;
+  for (const auto& s : r.sides) total += width(s) + 2;
+  std::string lhs = w.top(r.sides[0]);
+  if (total <= limit) {
+    std::string row = lhs;
+    for (std::size_t i = 1; i < r.sides.size(); ++i) row += (i == 1 ? " &= " : " = ") + w.top(r.sides[i]);
+    return {row};
+  }
+  std::vector<std::string> rows;
+  double lw = width(r.sides[0]) + 2;
+  for (std::size_t i = 1; i < r.sides.size(); ++i) {
+    std::vector<std::string> part = w.broken_side(r.sides[i], limit - lw, limit - lw - 3);
+    part[0] = (i == 1 ? lhs : std::string()) + " &= " + part[0];
+    for (auto& p : part) rows.push_back(std::move(p));
+  }
+  return rows;
+}
+
+double latex_width(const Node& n) { return width(n); }
 
 std::string latex_escape_text(const std::string& text) {
   std::string out;
@@ -563,37 +482,6 @@ std::string latex_escape_text(const std::string& text) {
     i += len;
   }
   return out;
-}
-
-bool step_checked_ok(const StepResult& r) {
-  std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
-  return own == 0 && r.verdict.holds();
-}
-
-std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOptions& opt) {
-  DocumentWriter w(opt);
-  std::vector<const CheckSummary*> checks(ds.size(), nullptr);
-  if ((opt.annotate || opt.mark_unchecked) && opt.checks) {
-    if (opt.checks->size() != ds.size())
-      throw std::invalid_argument("write_latex: one check summary per derivation is needed");
-    checks = *opt.checks;
-  }
-  std::string out;
-  if (opt.fragment) {
-    out += w.fragment_header();
-  } else {
-    std::string title = opt.title;
-    if (title.empty()) title = ds.size() == 1 ? ds[0]->title : "Derivations";
-    out += w.preamble(title);
-  }
-  for (std::size_t i = 0; i < ds.size(); ++i) out += w.section(*ds[i], checks[i]);
-  if (!opt.fragment) out += "\\end{document}\n";
-  return out;
-}
-
-std::string write_latex(const Derivation& d, const LatexOptions& opt) {
-  std::vector<const Derivation*> v{&d};
-  return write_latex(v, opt);
 }
 
 }  // namespace dc

@@ -19,7 +19,8 @@
 //   diff(f, t, 2)       \frac{\mathrm{d}^{2} v}{\mathrm{d} t^{2}}
 //   limit(f, x, oo)     \lim_{x \to \infty} f
 //   integral(f, t, a, b) \int_{a}^{b} f \, \mathrm{d} t
-//   v(t)                v(t)          (declared functions by their TeX name)
+//   v(t)                v             (a declared function at its own parameters, when no other
+//                                     name prints as v; v(0), and v(t) beside a symbol v, as written)
 //   pi, oo              \pi, \infty
 // A chain a = b = c is one line, or an aligned block (a &= b \\ &= c) when it is long.
 #pragma once
@@ -36,7 +37,7 @@ struct CheckSummary;
 
 struct LatexOptions {
   bool fragment = false;     // no preamble / \begin{document}: pieces to \input
-  bool annotate = false;     // each step's rule and verdict as a margin note, notes as text
+  bool annotate = false;     // each step on its own, a line with its rule and verdict and its notes under it
   std::string title;         // document title (standalone); default: the derivation's title
   std::string subtitle;      // a line under the title (standalone), may be empty
   // Check results for `annotate` (one per derivation, same order, from dc::check_derivation);
@@ -50,13 +51,22 @@ struct LatexOptions {
 // Did this step hold (proved, numerically, or a premise), apart from a reported erratum?
 bool step_checked_ok(const struct StepResult& r);
 
-// A whole document (or fragment) with one section per derivation.
+// A whole document (or fragment) with one section per derivation: its headings, text and
+// figure placeholders in file order, the equations between them in align displays
+// (latex_document.cpp).
 std::string write_latex(const std::vector<const Derivation*>& derivations, const LatexOptions& opt);
 std::string write_latex(const Derivation& d, const LatexOptions& opt);
 
 // One expression / relation (no environment). `aligned`: a chain as `a &= b \\ &= c`.
 std::string latex_expression(const Node& n, const SymbolTable& table);
 std::string latex_relation(const Relation& r, const SymbolTable& table, bool aligned = false);
+
+// The rows of an `align` display: `lhs &= rhs` while the whole chain fits in `limit` (width
+// units of latex_width, about one per printed character), otherwise one row per side
+// (`&= side`), and a side wider than the line broken before its top-level + and -
+// (`&\quad + term`). A lone expression is `& expr`.
+std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit);
+double latex_width(const Node& n);
 
 // Would latex_relation print this chain as an aligned block in the document?
 bool latex_prefers_aligned(const Relation& r, const SymbolTable& table);

@@ -100,6 +100,24 @@ class Reader {
     while (!at_end() && std::isspace(static_cast<unsigned char>(peek()))) ++i_;
   }
 
+  // A long sum broken over rows of an align: `\\ &\quad + term` continues the sum.
+  void skip_sum_break() {
+    std::size_t save = i_;
+    if (!starts("\\\\")) return;
+    i_ += 2;
+    skip_ws();
+    if (peek() == '&') {
+      ++i_;
+      skip_ws();
+      if (starts("\\quad ")) {
+        i_ += 6;
+        skip_ws();
+        if (peek() == '+' || peek() == '-') return;
+      }
+    }
+    i_ = save;
+  }
+
   // Whitespace and the layout markers of aligned/gather blocks.
   void skip_layout() {
     for (;;) {
@@ -167,6 +185,7 @@ class Reader {
     }
     for (;;) {
       skip_ws();
+      skip_sum_break();
       char c = peek();
       if (c == '+') { ++i_; left = bin(NodeKind::Add, std::move(left), term()); }
       else if (c == '-') { ++i_; left = bin(NodeKind::Sub, std::move(left), term()); }
@@ -268,6 +287,12 @@ class Reader {
       }
     }
     i_ = after;
+    if (n->function) {
+      // a declared function printed bare at its own parameters: v is v(t)
+      std::vector<Node> a;
+      for (const auto& p : n->params) a.push_back(make(NodeKind::Symbol, p));
+      return call(n->name, std::move(a));
+    }
     return make(NodeKind::Symbol, n->name);
   }
 
@@ -508,11 +533,13 @@ std::vector<LatexDisplay> extract_latex_displays(const std::string& doc) {
       cur = &out.back();
       continue;
     }
-    if (line.rfind("\\begin{gather}", 0) == 0 || line.rfind("\\begin{equation", 0) == 0) {
+    if (line.rfind("\\begin{gather}", 0) == 0 || line.rfind("\\begin{equation", 0) == 0 ||
+        line.rfind("\\begin{align}", 0) == 0 || line.rfind("\\begin{align*}", 0) == 0) {
       in_env = true;
       continue;
     }
-    if (line.rfind("\\end{gather}", 0) == 0 || line.rfind("\\end{equation", 0) == 0) {
+    if (line.rfind("\\end{gather}", 0) == 0 || line.rfind("\\end{equation", 0) == 0 ||
+        line.rfind("\\end{align}", 0) == 0 || line.rfind("\\end{align*}", 0) == 0) {
       in_env = false;
       continue;
     }

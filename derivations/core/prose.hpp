@@ -1,0 +1,30 @@
+// The inline markup of literate text in .dc files (docs/format.md, "Text"):
+//   $...$      TeX math, copied as written (braces must balance; no '$' inside)
+//   `expr`     an expression in the file's own syntax, typeset with its declared symbols
+//   *words*    emphasis
+//   \# \$ \` \*  the character itself
+// Everything else is plain text (escaped for LaTeX when printed).
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "derivations/core/derivation.hpp"
+
+namespace dc {
+
+struct ProseSource {
+  const std::string& text;               // the paragraph; lines joined by '\n'
+  const std::vector<SourcePos>& pos;     // one position per character of text
+  SourcePos end;                         // just after the last character
+};
+
+// Split a paragraph into pieces. `validate` checks an `expr` piece against the file's symbols
+// (it throws InputError); `fail` throws a positioned InputError (never returns).
+std::vector<ProsePiece> parse_prose(const ProseSource& src, const std::function<void(const Node&)>& validate,
+                                    const std::function<void(const SourcePos&, const std::string&, int)>& fail);
+
+// Plain text of a paragraph (expressions as written, math as TeX): for messages and tests.
+std::string prose_plain_text(const std::vector<ProsePiece>& pieces);
+
+}  // namespace dc
