@@ -121,31 +121,66 @@ TEST_CASE("momentum change as v1p -> v1", "[numeric][stable]") {
   REQUIRE(r.stable_ulps <= 4);
 }
 
-TEST_CASE("stable forms stay within 4 ulps over the domain and the stress points", "[numeric][stable]") {
+// A priori first-order bounds for the stable forms (the inputs are exact doubles): a correctly
+// rounded operation adds at most u = 2^-53 of relative error, a libm sin/asin at most 2u (1 ulp),
+// sqrt halves the relative error of its argument, a square doubles it, and sums of terms of one
+// sign do not amplify; a relative error of r*u is less than r ulps of the result. Counting:
+//   momentum_change      m1*(v1p - v1)                                  2 roundings          -> 2
+//   energy_loss_plastic  1/2*(v1 - v2)^2/(1/m1 + 1/m2)                  2*1 + 1 + 1+1+1 + 1  -> 7
+//   energy_loss_general  (1 - e)*(1 + e)/2*(...plastic...)              1 + 1 + 1 + 7 + 1    -> 11
+//   height               2*L*sin(theta/2)^2                             2*2 + 1 + 1          -> 6
+// (measured with 3 seeds x 3000 points: 1.3, 3.7, 5.0 and 2.6 ulps). The test used to demand 4 ulps
+// of every form; the sanitizer run's different sampling found energy_loss_general at 4.26 ulps,
+// and 9000 points found 5.0: 4 was a lucky seed, not a property.
+TEST_CASE("stable forms stay within their a priori error bounds over the domain and the stress points",
+          "[numeric][stable]") {
   CrossCheckOptions opt;
   opt.points = 150;
   CAPTURE(opt.seed);
   // formulas whose stable form is well-conditioned over the whole declared domain
-  const std::map<std::string, std::vector<std::string>> files = {
+  const std::map<std::string, std::vector<std::pair<std::string, double>>> files = {
       {"05_direct_impact.dc",
-       {"momentum_change", "energy_loss_plastic_naive", "energy_loss_general", "energy_loss_general_naive"}},
-      {"06_ballistic_pendulum.dc", {"height", "deflection"}},
+       {{"momentum_change", 2}, {"energy_loss_plastic_naive", 7}, {"energy_loss_general", 11},
+        {"energy_loss_general_naive", 11}}},
+      {"06_ballistic_pendulum.dc", {{"height", 6}}},
   };
   for (const auto& [file, labels] : files) {
     const auto reports = crosscheck(handout(file), opt);
-    for (const auto& label : labels) {
+    for (const auto& [label, bound] : labels) {
       auto rep = std::find_if(reports.begin(), reports.end(), [&](const FormulaReport& r) { return r.label == label; });
       REQUIRE(rep != reports.end());
       auto stable = std::find_if(rep->methods.begin(), rep->methods.end(),
                                  [](const MethodStats& m) { return m.method == "stable"; });
       REQUIRE(stable != rep->methods.end());
-      CAPTURE(file, label, stable->points, stable->stress_points, stable->max_ulps_random, stable->max_ulps_stress);
+      CAPTURE(file, label, bound, stable->points, stable->stress_points, stable->max_ulps_random, stable->max_ulps_stress);
       CHECK(stable->points >= 150);
       CHECK(stable->stress_points >= 5);
-      CHECK(stable->max_ulps <= 4);
+      CHECK(stable->max_ulps <= bound);
       CHECK(stable->non_finite == 0);
     }
   }
+}
+
+// deflection_stable = 2*asin(y), y = m*v0/(2*(M + m)*sqrt(L*g)), is not well-conditioned on the
+// whole domain: asin's condition number y/(sqrt(1 - y^2)*asin(y)) grows without bound as
+// theta -> pi (measured: 10.4 ulps there, and no fixed bound holds). For theta <= 60 degrees
+// (y <= 1/2) it is at most 1.1; y carries at most 5.5u (m*v0, M + m, L*g halved by sqrt, sqrt,
+// the product, the quotient), asin adds 2u: (1.1*5.5 + 2)u -> at most 9 ulps.
+TEST_CASE("the pendulum's deflection stays within its bound where asin is well-conditioned", "[numeric][stable]") {
+  double worst = 0;
+  int n = 0;
+  for (double m : {0.003, 0.05, 1.0, 7.3})
+    for (double M : {0.7, 4.0, 55.0})
+      for (double L : {0.4, 2.5})
+        for (double y : {1e-12, 1e-6, 1e-3, 0.01, 0.1, 0.2, 0.3, 0.37, 0.45, 0.5}) {
+          const double g = 9.81;
+          const double v0 = y * 2 * (M + m) * std::sqrt(L * g) / m;   // a double near the target y
+          const Errors r = errors_at("06_ballistic_pendulum.dc", "deflection", {{"m", m}, {"M", M}, {"v0", v0}, {"L", L}, {"g", g}});
+          worst = std::max(worst, r.stable_ulps);
+          ++n;
+        }
+  CAPTURE(n, worst);
+  CHECK(worst <= 9);
 }
 
 TEST_CASE("the rocket's stable form with its regime condition stays within 4 ulps where -g t does not cancel", "[numeric][stable]") {
