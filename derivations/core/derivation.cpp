@@ -26,7 +26,7 @@ const std::vector<std::string> kRuleNames = {"given",  "definition", "rewrite", 
 const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
 const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
 const std::vector<std::string> kStatementKeywords = {"title", "section", "symbol", "function",
-                                                     "assume", "heading", "text", "remark", "figure"};
+                                                     "assume", "heading", "text", "remark", "figure", "notation"};
 const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable", "hide"};
 
 bool contains(const std::vector<std::string>& v, const std::string& s) {
@@ -269,6 +269,17 @@ class Reader {
         std::string str = string_literal(s, p, "a quoted " + w + ", e.g. " + w + " \"...\"");
         expect_end(s, p);
         (w == "title" ? d_.title : d_.section) = str;
+      } else if (w == "notation") {
+        // notation dot | leibniz: how the LaTeX writes derivatives of declared functions
+        std::size_t p = 0;
+        skip_ws(s, p);
+        SourcePos at = s.at(p);
+        std::string v = identifier(s, p, "'dot' or 'leibniz' after notation");
+        if (v != "dot" && v != "leibniz")
+          fail(at, "unknown notation '" + v + "'; expected 'dot' (\\dot{x}) or 'leibniz' (dx/dt)",
+               static_cast<int>(v.size()));
+        expect_end(s, p);
+        d_.dot_derivatives = v == "dot";
       } else if (w == "heading" || w == "figure" || w == "text" || w == "remark") {
         prose_statement(w, s, {file(), st.first_line, 1});
       } else if (w == "symbol") {
@@ -287,7 +298,7 @@ class Reader {
       std::string shown = w.empty() ? l.substr(0, utf8_length(l, 0)) : w;
       fail({file(), st.first_line, 1},
            "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
-           "heading, text, remark, figure, or a step '[(TAG)] LABEL: CLAIM'",
+           "heading, text, remark, figure, notation, or a step '[(TAG)] LABEL: CLAIM'",
            static_cast<int>(std::max<std::size_t>(1, shown.size())));
     }
     step_statement(st, h);

@@ -92,6 +92,7 @@ struct Derivation {
   SymbolTable symbols;
   std::vector<Step> steps;
   std::vector<Prose> prose;  // in file order
+  bool dot_derivatives = false;   // `notation dot`: the LaTeX writes d/dt of x(t) as \dot{x}
 
   const Step* find(const std::string& label) const;
 

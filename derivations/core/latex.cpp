@@ -28,7 +28,7 @@ double width(const Node& n);
 
 class Writer {
  public:
-  explicit Writer(const SymbolTable& t) : table_(t) {}
+  explicit Writer(const SymbolTable& t, const LatexStyle& style = {}) : table_(t), style_(style) {}
 
   // An expression at the top of a side, a numerator, an argument: the author's outer
   // parentheses are redundant there and dropped.
@@ -291,6 +291,12 @@ class Writer {
       std::string order = n.args.size() == 3 ? "^{" + top(n.args[2]) + "}" : "";
       std::string v = top(var);
       std::string ftex;
+      const Node& f0 = n.args[0];
+      // \dot{x}: a declared function at its own single parameter (printed bare), order 1 or 2
+      if (style_.dot_derivatives && f0.kind == NodeKind::Call && f0.args.size() == 1 && bare_function(f0) &&
+          simple_derivand(f0, var, &ftex) &&
+          (n.args.size() == 2 || (n.args[2].kind == NodeKind::Number && n.args[2].text == "2")))
+        return std::string(n.args.size() == 2 ? "\\dot{" : "\\ddot{") + ftex + "}";
       if (simple_derivand(n.args[0], var, &ftex))
         return frac("\\mathrm{d}" + order + " " + ftex, "\\mathrm{d} " + v + order);
       return frac("\\mathrm{d}" + order, "\\mathrm{d} " + v + order) + "\\left(" + top(n.args[0]) + "\\right)";
@@ -316,6 +322,7 @@ class Writer {
 
  private:
   const SymbolTable& table_;
+  LatexStyle style_;
 };
 
 // Rough printed width (in characters of output) of a side, to decide when a chain breaks.
@@ -390,7 +397,9 @@ std::string hex4(std::uint32_t cp) {
 
 }  // namespace
 
-std::string latex_expression(const Node& n, const SymbolTable& table) { return Writer(table).top(n); }
+std::string latex_expression(const Node& n, const SymbolTable& table, const LatexStyle& style) {
+  return Writer(table, style).top(n);
+}
 
 bool latex_prefers_aligned(const Relation& r, const SymbolTable& table) {
   if (r.sides.size() < 3) return false;
@@ -411,8 +420,9 @@ std::string latex_relation(const Relation& r, const SymbolTable& table, bool ali
   return out;
 }
 
-std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit) {
-  Writer w(table);
+std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit,
+                                    const LatexStyle& style) {
+  Writer w(table, style);
   if (r.sides.size() == 1) {
     std::vector<std::string> rows = w.broken_side(r.sides[0], limit, limit - 3);
     rows[0] = "& " + rows[0];

@@ -17,6 +17,7 @@
 //   abs(x)              \left|x\right|
 //   diff(v(t), t)       \frac{\mathrm{d} v}{\mathrm{d} t};  diff(f, t) \frac{\mathrm{d}}{\mathrm{d} t}\left(f\right)
 //   diff(f, t, 2)       \frac{\mathrm{d}^{2} v}{\mathrm{d} t^{2}}
+//   diff(x(t), t[, 2])  \dot{x}, \ddot{x} with LatexStyle::dot_derivatives (`notation dot`)
 //   limit(f, x, oo)     \lim_{x \to \infty} f
 //   integral(f, t, a, b) \int_{a}^{b} f \, \mathrm{d} t
 //   v(t)                v             (a declared function at its own parameters, when no other
@@ -34,6 +35,12 @@
 namespace dc {
 
 struct CheckSummary;
+
+// How quantities are written where a file may choose (`notation dot` in a .dc file).
+struct LatexStyle {
+  // d/dt of a declared function of one variable as \dot{x}, \ddot{x} instead of dx/dt
+  bool dot_derivatives = false;
+};
 
 struct LatexOptions {
   bool fragment = false;     // no preamble / \begin{document}: pieces to \input
@@ -58,14 +65,15 @@ std::string write_latex(const std::vector<const Derivation*>& derivations, const
 std::string write_latex(const Derivation& d, const LatexOptions& opt);
 
 // One expression / relation (no environment). `aligned`: a chain as `a &= b \\ &= c`.
-std::string latex_expression(const Node& n, const SymbolTable& table);
+std::string latex_expression(const Node& n, const SymbolTable& table, const LatexStyle& style = {});
 std::string latex_relation(const Relation& r, const SymbolTable& table, bool aligned = false);
 
 // The rows of an `align` display: `lhs &= rhs` while the whole chain fits in `limit` (width
 // units of latex_width, about one per printed character), otherwise one row per side
 // (`&= side`), and a side wider than the line broken before its top-level + and -
 // (`&\quad + term`). A lone expression is `& expr`.
-std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit);
+std::vector<std::string> latex_rows(const Relation& r, const SymbolTable& table, double limit,
+                                    const LatexStyle& style = {});
 double latex_width(const Node& n);
 
 // Would latex_relation print this chain as an aligned block in the document?

@@ -66,14 +66,14 @@ std::string rule_text(const Step& s) {
   return s.rule.written_name.empty() ? s.rule.name : s.rule.written_name;
 }
 
-std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& table) {
+std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& table, const LatexStyle& style) {
   std::string out;
   for (const auto& p : pieces) {
     switch (p.kind) {
       case ProsePiece::Kind::Text: out += latex_escape_text(p.text); break;
       case ProsePiece::Kind::Emph: out += "\\emph{" + latex_escape_text(p.text) + "}"; break;
       case ProsePiece::Kind::Math: out += "$" + p.text + "$"; break;
-      case ProsePiece::Kind::Expr: out += "$" + latex_expression(p.expr, table) + "$"; break;
+      case ProsePiece::Kind::Expr: out += "$" + latex_expression(p.expr, table, style) + "$"; break;
     }
   }
   return out;
@@ -103,7 +103,7 @@ class DocumentWriter {
     auto prose_before = [&](std::size_t step_index) {
       while (next_prose < d.prose.size() && d.prose[next_prose].before_step <= step_index) {
         flush();
-        out += prose(d.prose[next_prose++], d.symbols);
+        out += prose(d.prose[next_prose++], d.symbols, style_of(d));
       }
     };
     for (std::size_t i = 0; i < d.steps.size(); ++i) {
@@ -162,14 +162,20 @@ class DocumentWriter {
     return "% " + s.label + " (" + file_ + ":" + std::to_string(s.pos.line) + ")\n";
   }
 
-  std::string prose(const Prose& p, const SymbolTable& table) {
+  static LatexStyle style_of(const Derivation& d) {
+    LatexStyle st;
+    st.dot_derivatives = d.dot_derivatives;
+    return st;
+  }
+
+  std::string prose(const Prose& p, const SymbolTable& table, const LatexStyle& style) {
     switch (p.kind) {
-      case Prose::Kind::Heading: return "\\subsection*{" + prose_tex(p.pieces, table) + "}\n\n";
-      case Prose::Kind::Paragraph: return prose_tex(p.pieces, table) + "\n\n";
-      case Prose::Kind::Remark: return "\\paragraph*{Remark.} " + prose_tex(p.pieces, table) + "\n\n";
+      case Prose::Kind::Heading: return "\\subsection*{" + prose_tex(p.pieces, table, style) + "}\n\n";
+      case Prose::Kind::Paragraph: return prose_tex(p.pieces, table, style) + "\n\n";
+      case Prose::Kind::Remark: return "\\paragraph*{Remark.} " + prose_tex(p.pieces, table, style) + "\n\n";
       case Prose::Kind::Figure:
         return "\\begin{center}\n\\fbox{\\parbox{0.8\\linewidth}{\\centering\\vspace{3ex}"
-               "\\textit{Figure:} " + prose_tex(p.pieces, table) + "\\vspace{3ex}}}\n\\end{center}\n\n";
+               "\\textit{Figure:} " + prose_tex(p.pieces, table, style) + "\\vspace{3ex}}}\n\\end{center}\n\n";
     }
     return {};
   }
@@ -177,7 +183,7 @@ class DocumentWriter {
   // The rows of a step in an align (tag on its last row).
   std::string rows(const Derivation& d, const Step& s, const std::string& last_extra = {}) {
     const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
-    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit());
+    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit(), style_of(d));
     std::string out;
     for (std::size_t i = 0; i < rs.size(); ++i) {
       bool last = i + 1 == rs.size();
@@ -214,7 +220,7 @@ class DocumentWriter {
     if (s.erratum) {
       // equation + aligned: the footnote mark is typeset once
       const Relation claim = displayed_claim(s, s.erratum->corrected);
-      std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - 12);
+      std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - 12, style_of(d));
       out += s.tag.empty() ? "\\begin{equation*}\n" : "\\begin{equation}\n";
       out += "\\begin{aligned}\n";
       for (std::size_t i = 0; i < rs.size(); ++i) out += rs[i] + (i + 1 < rs.size() ? " \\\\\n" : "\n");
@@ -224,7 +230,7 @@ class DocumentWriter {
       Relation printed = s.claim;
       std::string text;
       for (std::size_t i = 0; i < printed.sides.size(); ++i)
-        text += (i ? " = " : "") + latex_expression(printed.sides[i], d.symbols);
+        text += (i ? " = " : "") + latex_expression(printed.sides[i], d.symbols, style_of(d));
       out += "\\footnotetext{Corrected: the source prints $" + text + "$; " + latex_escape_text(s.erratum->why) +
              ".}\n";
     } else {

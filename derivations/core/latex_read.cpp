@@ -402,6 +402,21 @@ class Reader {
       Node b = braced_expr();
       return bin(NodeKind::Div, std::move(a), std::move(b));
     }
+    if ((starts("\\dot{") || starts("\\ddot{")) && !match_name()) {
+      // \dot{x}: d/dt of a declared function of one variable, printed bare (`notation dot`)
+      bool second = starts("\\ddot");
+      i_ += second ? 5 : 4;
+      std::string tex = trim(brace_group_raw());
+      const Name* fn = nullptr;
+      for (const Name& m : names_)
+        if (m.function && m.tex == tex && m.params.size() == 1) fn = &m;
+      if (!fn) fail("'\\dot{" + tex + "}' is not a declared function of one variable");
+      std::vector<Node> a;
+      a.push_back(call(fn->name, {make(NodeKind::Symbol, fn->params[0])}));
+      a.push_back(make(NodeKind::Symbol, fn->params[0]));
+      if (second) a.push_back(make(NodeKind::Number, "2"));
+      return call("diff", std::move(a));
+    }
     if (accept("\\sqrt")) {
       std::vector<Node> a;
       a.push_back(braced_expr());

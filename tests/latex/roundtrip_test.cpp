@@ -171,3 +171,36 @@ TEST_CASE("latex reader: errors carry positions", "[latex][roundtrip]") {
   CHECK_THROWS_AS(dc::read_latex_expression("\\left(m_1", t), dc::InputError);
   CHECK_THROWS_AS(dc::read_latex_expression("\\unknown", t), dc::InputError);
 }
+
+TEST_CASE("notation dot: derivatives of declared functions print as dots and read back", "[latex][roundtrip]") {
+  const std::string body =
+      "symbol t : nonnegative [s]\nsymbol k, m : positive [1]\nfunction x(t) : real [1]\n"
+      "a: diff(x(t), t, 2) = -k/m*x(t)\n    by given\n"
+      "b: m*diff(x(t), t)^2/2 + k*x(t)^2/2 = m*diff(x(t), t)^2/2 + k*x(t)^2/2\n    by rewrite a\n"
+      "c: x(0) = diff(x(t), t)\n    by given\n";
+  for (bool dot : {true, false}) {
+    CAPTURE(dot);
+    dc::Derivation d = dc::parse_derivation(dc::SourceText{"n.dc", (dot ? "notation dot\n" : "") + body});
+    CHECK(d.dot_derivatives == dot);
+    std::string tex = dc::write_latex(d, dc::LatexOptions{});
+    CHECK((tex.find("\\ddot{x} &= -\\frac{k}{m} x") != std::string::npos) == dot);
+    CHECK((tex.find("\\dot{x}") != std::string::npos) == dot);
+    CHECK(tex.find("x(0) &=") != std::string::npos);   // x at another point keeps its argument
+    CHECK(tex.find("x(t)") == std::string::npos);      // one notation: x, not x(t)
+    auto displays = dc::extract_latex_displays(tex);
+    REQUIRE(displays.size() == d.steps.size());
+    for (std::size_t i = 0; i < displays.size(); ++i) {
+      CAPTURE(displays[i].latex);
+      dc::Relation r = dc::read_latex_relation(displays[i].latex, d.symbols);
+      REQUIRE(r.sides.size() == d.steps[i].claim.sides.size());
+      for (std::size_t k = 0; k < r.sides.size(); ++k)
+      {
+        std::string why;
+        CHECK(same_value(r.sides[k], d.steps[i].claim.sides[k], d.symbols, &why));
+        CAPTURE(why);
+      }
+    }
+  }
+  CHECK_THROWS_WITH(dc::parse_derivation(dc::SourceText{"n.dc", "notation dots\n" + body}),
+                    Catch::Contains("n.dc:1:10: error: unknown notation 'dots'"));
+}
