@@ -5,7 +5,7 @@
 //   factor   := primary ( '^' '{' expr '}' )?
 //   primary  := number | name | name '(' args ')' | '{' expr '}' | '\left(' expr '\right)'
 //             | '(' expr ')' | '\left|' expr '\right|' | \frac | \sqrt | \mathrm{e}^ | \ln ...
-//             | \lim_{x \to p} factor | \int_{a}^{b} expr \, \mathrm{d} x | \pi | \infty
+//             | \lim_{x \to p} factor | \lim_{x \to p^{+}} factor | \int_{a}^{b} expr \, \mathrm{d} x | \pi | \infty
 #include "derivations/core/latex_read.hpp"
 
 #include <algorithm>
@@ -456,13 +456,36 @@ class Reader {
       expect_char('{');
       Node var = expr();
       expect("\\to");
-      Node point = expr();
+      // a one-sided limit: \lim_{x \to 0^{+}} (the writer's fourth argument, "+" or "-")
+      std::size_t close = i_;
+      for (int depth = 0; close < s_.size(); ++close) {
+        if (s_[close] == '{') ++depth;
+        else if (s_[close] == '}' && depth-- == 0) break;
+      }
+      std::string side;
+      std::string_view sub = s_.substr(i_, close - i_);
+      while (!sub.empty() && std::isspace(static_cast<unsigned char>(sub.back()))) sub.remove_suffix(1);
+      for (const char* sfx : {"^{+}", "^{-}"})
+        if (sub.size() > 4 && sub.substr(sub.size() - 4) == sfx) side = sfx[2] == '+' ? "+" : "-";
+      Node point;
+      if (side.empty()) {
+        point = expr();
+      } else {
+        std::string_view whole = s_;
+        s_ = s_.substr(0, i_ + sub.size() - 4);   // the point alone
+        point = expr();
+        skip_ws();
+        if (!at_end()) fail("expected '^{" + side + "}' after the limit point");
+        s_ = whole;
+        i_ += 4;
+      }
       expect_char('}');
       Node body = factor();
       std::vector<Node> a;
       a.push_back(std::move(body));
       a.push_back(std::move(var));
       a.push_back(std::move(point));
+      if (!side.empty()) a.push_back(make(NodeKind::Symbol, side));
       return call("limit", std::move(a));
     }
     if (accept("\\int")) {

@@ -204,3 +204,27 @@ TEST_CASE("notation dot: derivatives of declared functions print as dots and rea
   CHECK_THROWS_WITH(dc::parse_derivation(dc::SourceText{"n.dc", "notation dots\n" + body}),
                     Catch::Contains("n.dc:1:10: error: unknown notation 'dots'"));
 }
+
+TEST_CASE("one-sided limits read back with their side", "[latex][roundtrip]") {
+  dc::Derivation d = dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/rules/limit_forms.dc");
+  std::string tex = dc::write_latex(d, dc::LatexOptions{});
+  auto displays = dc::extract_latex_displays(tex);
+  int sided = 0;
+  for (const auto& disp : displays) {
+    const dc::Step* s = d.find(disp.label);
+    REQUIRE(s);
+    if (s->rule.name != "limit" || s->rule.dir == 0 || !s->rule.into.empty()) continue;
+    CAPTURE(disp.label, disp.latex);
+    dc::Relation r = dc::read_latex_relation(disp.latex, d.symbols);
+    REQUIRE(r.sides.size() >= 2);
+    const dc::Node& lim = r.sides[0];
+    REQUIRE(lim.kind == dc::NodeKind::Call);
+    CHECK(lim.text == "limit");
+    REQUIRE(lim.args.size() == 4);
+    CHECK(lim.args[3].text == (s->rule.dir > 0 ? "+" : "-"));
+    CHECK(dc::to_text(lim.args[2]) == dc::to_text(s->rule.point->value));
+    ++sided;
+  }
+  CHECK(sided >= 2);
+  CHECK_THROWS_AS(dc::read_latex_expression("\\lim_{x \\to 0^{*}} x", d.symbols), dc::InputError);
+}
