@@ -7,7 +7,12 @@
 //      antiderivative in b (dG/db = f(b)) that vanishes at b = a, each proved symbolically;
 //   3. rigorous quadrature (Arb) at sampled parameter values: a certified difference refutes,
 //      agreement everywhere holds numerically.
-// An integral inside a larger expression is undecided with that reason, not an input error.
+// Integrals inside larger expressions (and nested ones) are rewritten first: d/dx of an integral
+// by Leibniz's rule, f(b) b' - f(a) a', when the integrand is free of x and continuous on the
+// whole line; an integral with a polynomial integrand by its exact value. What is left without
+// an integral is compared by the prover; an integral neither rewrite handles (a non-polynomial
+// integrand inside an expression, an infinite limit) is undecided with that reason, never an
+// input error.
 #pragma once
 #include <optional>
 
