@@ -11,6 +11,7 @@
 //    than 10000 decimal digits (estimated as |n| * log10(max(|num|, den)) from bit lengths), or
 //  * the exponent is a non-integer number with |exponent| > 1000.
 // Nested exponents are checked bottom-up, so 2^(10^(10^10)) fails at the inner power.
+#include <optional>
 #include <algorithm>
 #include <set>
 #include <sstream>
@@ -25,6 +26,7 @@
 #include "derivations/core/limit.hpp"
 #include "derivations/core/literal.hpp"
 #include "derivations/core/source.hpp"
+#include "derivations/core/integral_equal.hpp"
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/units.hpp"
 
@@ -187,6 +189,59 @@ class Converter {
   }
 
  private:
+  static bool is_integral_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "integral"; }
+
+  // The parts of integral(f, t, a, b): f, t (a symbol, held by ex), a, b.
+  struct IntegralParts {
+    GiNaC::ex f, t, a, b;
+  };
+  IntegralParts integral_parts(const Node& n) {
+    check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
+    const SymbolInfo& x = variable_arg(n, n.args[1], table_);
+    if (infinity_sign(n.args[2]) != 0 || infinity_sign(n.args[3]) != 0)
+      throw UndecidedLimit("improper integrals (a limit of integration at oo or -oo) are not evaluated yet ('" +
+                               short_text(n) + "')",
+                           n.pos);
+    IntegralParts p{conv(n.args[0]), x.sym, conv(n.args[2]), conv(n.args[3])};
+    if (p.a.has(p.t) || p.b.has(p.t))
+      throw InputError(n.pos, "a limit of integration contains the variable of integration", n.length);
+    return p;
+  }
+
+  // A definite integral inside an expression has a value here only when its integrand is a
+  // polynomial in the variable (GiNaC integrates it exactly; eval_integ would also "integrate"
+  // 1/x across 0, so nothing else). Otherwise the step is undecided, saying so; as a whole side
+  // `integral(f, x, a, b) = G` the integrate rule and `equal` check it by other means.
+  GiNaC::ex integral_value(const Node& n) {
+    IntegralParts p = integral_parts(n);
+    if (!p.f.is_polynomial(p.t))
+      throw UndecidedLimit("'" + short_text(n) + "' inside an expression is evaluated only for a polynomial "
+                               "integrand; as a whole side, integral(f, x, a, b) = G, it is checked by 'integrate' "
+                               "(in a .dc step) or by 'equal' and claims",
+                           n.pos);
+    GiNaC::ex v = guarded(n, [&] { return GiNaC::integral(p.t, p.a, p.b, p.f).eval_integ(); });
+    for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+      if (GiNaC::is_a<GiNaC::integral>(*it))
+        throw UndecidedLimit("GiNaC left '" + short_text(n) + "' unevaluated", n.pos);
+    return v;
+  }
+
+  // d/dx of integral(f, t, a, b) = f(b) db/dx - f(a) da/dx (Leibniz's rule) when f does not
+  // contain x and is continuous in t on the whole line; nullopt otherwise (then the integral
+  // must have a value of its own, and that is differentiated).
+  std::optional<GiNaC::ex> leibniz(const Node& in, const GiNaC::symbol& x) {
+    IntegralParts p = integral_parts(in);
+    if (p.f.has(x) || p.t.is_equal(x) || !continuous_everywhere(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t))) {
+      if (p.f.is_polynomial(p.t)) return std::nullopt;
+      throw UndecidedLimit("d/d" + x.get_name() + " of '" + short_text(in) + "': Leibniz's rule is applied only to "
+                               "an integrand free of " + x.get_name() + " and continuous on the whole line",
+                           in.pos);
+    }
+    return guarded(in, [&] {
+      return p.f.subs(p.t == p.b) * p.b.diff(x) - p.f.subs(p.t == p.a) * p.a.diff(x);
+    });
+  }
+
   // GiNaC reports 1/0, 0^0, log(0), tan(pi/2) by exceptions whose texts name its internals;
   // they become positioned input errors in our words.
   template <class F>
@@ -310,6 +365,9 @@ class Converter {
       check_count(n, 2, 3, "2 or 3 arguments: diff(f, x) or diff(f, x, n)");
       const SymbolInfo& x = variable_arg(n, n.args[1], table_);
       int order = diff_order(n);
+      if (order == 1 && is_integral_call(n.args[0])) {
+        if (auto d = leibniz(n.args[0], GiNaC::ex_to<GiNaC::symbol>(x.sym))) return *d;
+      }
       GiNaC::ex body = conv(n.args[0]);
       return guarded(n, [&] { return body.diff(GiNaC::ex_to<GiNaC::symbol>(x.sym), static_cast<unsigned>(order)); });
     }
@@ -344,8 +402,7 @@ class Converter {
                          n.length);
       return r.value;
     }
-    if (f == "integral")
-      throw InputError(n.pos, "integral(...) can only appear in a step checked by 'integrate'", n.length);
+    if (f == "integral") return integral_value(n);
     const SymbolInfo& info = declared_function(n, table_);
     if (info.params.size() != 1)
       throw InputError(n.pos, "functions of several variables are not supported", n.length);

@@ -142,9 +142,31 @@ TEST_CASE("to_ginac: undefined symbols and misuse are positioned errors", "[to_g
   CHECK_THAT(conv_error("foo(x)").message(), Catch::StartsWith("unknown function 'foo': built-in functions are sqrt"));
   CHECK(conv_error("1/oo").message() == "'oo' (infinity) may only appear as the point of limit(f, x, oo)");
   CHECK(conv_error("1/oo").pos().col == 3);
-  CHECK(conv_error("x + integral(v(t), t, 0, t1)").message() ==
-        "integral(...) can only appear in a step checked by 'integrate'");
-  CHECK(conv_error("x + integral(v(t), t, 0, t1)").pos().col == 5);
+}
+
+TEST_CASE("to_ginac: integrals in expressions have a value or an undecided reason, never a wrong one",
+          "[to_ginac][integral]") {
+  // a polynomial integrand is integrated exactly, nested ones too
+  CHECK((conv("x + integral(t, t, 0, t1)") - conv("x + t1^2/2")).expand().is_zero());
+  CHECK((conv("integral(integral(t*x, x, 0, 1), t, 0, t1)") - conv("t1^2/4")).expand().is_zero());
+  // d/dx of an integral: Leibniz's rule for a continuous integrand free of x
+  CHECK((conv("diff(integral(exp(-t^2), t, 0, x^2), x)") - conv("2*x*exp(-x^4)")).expand().is_zero());
+  CHECK((conv("diff(integral(x*t, t, 0, 1), x)") - conv("1/2")).expand().is_zero());
+  // anything else is undecided with the reason and the integral's position, not an input error
+  auto undecided = [](const std::string& s) -> UndecidedLimit {
+    try {
+      conv(s);
+    } catch (const UndecidedLimit& e) {
+      return e;
+    }
+    FAIL("no UndecidedLimit for " << s);
+    throw;
+  };
+  CHECK_THAT(undecided("x + integral(v(t), t, 0, t1)").what(), Catch::Contains("only for a polynomial integrand"));
+  CHECK(undecided("x + integral(v(t), t, 0, t1)").pos.col == 5);
+  CHECK_THAT(undecided("diff(integral(1/t, t, 1, x), x)").what(), Catch::Contains("Leibniz's rule is applied only"));
+  CHECK_THAT(undecided("integral(exp(-t), t, 0, oo)").what(), Catch::Contains("improper integrals"));
+  CHECK(conv_error("integral(t, t, 0, t)").message() == "a limit of integration contains the variable of integration");
 }
 
 TEST_CASE("to_ginac: wrong argument counts name the function and the expected count", "[to_ginac][errors]") {
