@@ -1,35 +1,169 @@
-// derivcheck eval FILE LABEL --at NAME=VALUE,... [--digits N]
-// Prints the value of formula LABEL of a derivation file at an exact-rational point, computed
-// with CLN (numeric/reference.hpp) and printed with N significant digits (deterministic).
+// derivcheck eval FILE LABEL (--at NAME=VALUE,... | --points IN.csv [-o OUT.csv])
+//                 [--method auto|double|long-double|compensated|stable|reference] [--digits N]
+//
+// reference: the value with N certified significant digits (Arb; numeric/bind.cpp).
+// The double methods (numeric/certified.hpp) print the double in round-trip form, then the
+// method and a certified bound on its error:
+//     -1.2857142857142858
+//     method: auto (correctly rounded: Arb enclosure at 96 bits)
+//     error: <= 0.5 ulp
+// Without --method: reference when --digits is given (as before), otherwise auto.
+// --points: one row per point, the header names the parameters; every row runs in a worker
+// under the budget, and a row that fails or runs out of budget says so in its own row.
 // Unknown label or parameter, a missing parameter or a value outside its symbol's declared
 // domain is an input error (exit 2) naming it.
+#include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
 #include "derivations/core/derivation.hpp"
+#include "derivations/core/io.hpp"
+#include "derivations/exec/pool.hpp"
+#include "numeric/certified.hpp"
+#include "numeric/exact.hpp"
 #include "numeric/reference.hpp"
 
 namespace dc::cli {
 namespace {
 
 struct EvalOptions {
-  std::string file, label, at;
+  std::string file, label, at, method, points, output;
   int digits = 50;
+  bool digits_given = false;
   BudgetFlags budget;
 };
 
-int run(const EvalOptions& o) {
+std::string bound_text(double ulps) {
+  if (ulps < 0) return "none (the value is not a finite double)";
+  if (ulps == 0) return "0 (exact)";
+  if (ulps == 0.5) return "<= 0.5 ulp";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", ulps);
+  double shown = std::strtod(buf, nullptr);
+  if (shown < ulps) std::snprintf(buf, sizeof buf, "%.2g", std::nextafter(shown * 1.05, 1e308));   // never below the bound
+  return std::string("<= ") + buf + (ulps == 1 ? " ulp" : " ulps");
+}
+
+// One point: the text `eval` prints (three or four lines) or, for CSV, the row's fields.
+struct Answer {
+  std::string value, method, bound, note;
+};
+
+Answer evaluate(const Derivation& d, const EvalOptions& o, const std::string& at) {
+  Answer a;
+  if (o.method == "reference") {
+    a.value = num::eval_formula(d, o.label, at, o.digits);
+    a.method = "reference (Arb, " + std::to_string(o.digits) + " certified digits)";
+    return a;
+  }
+  num::CertifiedDouble r = num::certified_eval(d, o.label, num::parse_assignments(at), *num::parse_double_method(o.method));
+  a.value = num::shortest_text(r.value);
+  a.method = r.method;
+  a.bound = bound_text(r.error_ulps);
+  a.note = r.note;
+  return a;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> out(1);
+  for (char c : line) {
+    if (c == ',') out.emplace_back();
+    else if (c != '\r' && c != ' ' && c != '\t') out.back() += c;
+  }
+  return out;
+}
+
+int run_points(const EvalOptions& o) {
+  const std::string text = read_file(o.points);
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);)
+    if (l.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(l);
+  if (lines.empty()) throw InputError({o.points, 1, 1}, "empty points file: expected a header row naming the parameters");
+  const std::vector<std::string> header = split_csv_line(lines[0]);
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i].empty()) throw InputError({o.points, 1, 1}, "empty column name in the header (column " + std::to_string(i + 1) + ")");
+  const Derivation d = load_derivation(o.file);
+  (void)formula(d, o.label);   // an unknown label is an input error before any row runs
+
+  exec::RunOptions run = o.budget.resolve();
+  exec::Pool pool(run.jobs, run.budget, [&](const std::string& row) -> std::string {
+    std::vector<std::string> cells = split_csv_line(row);
+    std::string at;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) at += (i ? "," : "") + header[i] + "=" + cells[i];
+    try {
+      if (cells.size() != header.size())
+        throw std::invalid_argument(std::to_string(cells.size()) + " values for " + std::to_string(header.size()) + " columns");
+      Answer a = evaluate(d, o, at);
+      return csv_field(a.value) + "," + csv_field(a.method) + "," + csv_field(a.bound) + "," + csv_field(a.note);
+    } catch (const std::exception& e) {
+      return ",,," + csv_field(std::string("error: ") + e.what());
+    }
+  });
+  std::string out;
+  for (const auto& h : header) out += csv_field(h) + ",";
+  out += "value,method,error_bound,note\n";
+  std::size_t next = 1;
+  int failed = 0;
+  pool.run(
+      [&](std::string& task) {
+        if (next >= lines.size()) return false;
+        task = lines[next++];
+        return true;
+      },
+      [&, row = std::size_t{1}](exec::Outcome&& r) mutable {
+        std::string cells;
+        for (const auto& c : split_csv_line(lines[row])) cells += csv_field(c) + ",";
+        ++row;
+        std::string result = r.done() ? r.payload : ",,," + csv_field("undecided: " + r.reason);
+        if (result.rfind(",,,", 0) == 0) ++failed;
+        out += cells + result + "\n";
+      });
+  if (o.output.empty() || o.output == "-") std::cout << out;
+  else write_file_atomic(o.output, out);
+  std::cerr << "eval: " << lines.size() - 1 << " points, " << failed << " without a value\n";
+  return failed ? kExitRefuted : kExitOk;
+}
+
+int run(EvalOptions o) {
+  if (o.method.empty()) o.method = o.digits_given ? "reference" : "auto";
+  if (o.method != "reference" && !num::parse_double_method(o.method))
+    throw std::invalid_argument("--method '" + o.method +
+                                "': expected auto, double, long-double, compensated, stable or reference");
+  if (o.digits_given && o.method != "reference")
+    throw std::invalid_argument("--digits applies to --method reference (the double methods print a double)");
+  if (!o.points.empty()) {
+    if (!o.at.empty()) throw std::invalid_argument("give either --at or --points, not both");
+    if (!o.output.empty() && o.output != "-") refuse_output_over_inputs(o.output, {o.file, o.points});
+    return run_points(o);
+  }
+  if (!o.output.empty()) throw std::invalid_argument("-o is for --points (the results as CSV)");
   return run_supervised(
       o.budget.resolve(),
       [&o](std::ostream& out) {
         const Derivation d = load_derivation(o.file);
+        Answer a;
         try {
-          out << num::eval_formula(d, o.label, o.at, o.digits) << "\n";
+          a = evaluate(d, o, o.at);
         } catch (const std::range_error& e) {
           out << "undecided: " << e.what() << "\n";
           return kExitUndecided;
+        }
+        out << a.value << "\n";
+        if (o.method != "reference") {
+          out << "method: " << a.method << "\n";
+          out << "error: " << a.bound << "\n";
+          if (!a.note.empty()) out << "note: " << a.note << "\n";
         }
         return kExitOk;
       },
@@ -40,14 +174,20 @@ int run(const EvalOptions& o) {
 }
 
 const CommandRegistrar registrar(
-    "eval", "evaluate a formula of a derivation file exactly (CLN) at a point of exact rationals",
+    "eval", "evaluate a formula of a derivation file: a certified double, or N certified digits",
     [](CLI::App& sub) -> std::function<int()> {
       auto o = std::make_shared<EvalOptions>();
       sub.add_option("file", o->file, "derivation file")->required();
       sub.add_option("label", o->label, "label of a step 'y = expr'")->required();
-      sub.add_option("--at", o->at, "the point: NAME=VALUE,... with exact values (5/2, -0.125, 1e-9)");
-      sub.add_option("--digits", o->digits, "significant digits of the result (1..1000)")->capture_default_str();
-      o->budget.add_to(sub, false);
+      sub.add_option("--at", o->at, "the point: NAME=VALUE,... with exact values (5/2, -0.125, 1e-9, 1e+200)");
+      sub.add_option("--method", o->method,
+                     "auto (correctly rounded double, default), double, long-double, compensated, stable, or "
+                     "reference (N digits; the default with --digits)");
+      sub.add_option("--digits", o->digits, "significant digits of --method reference (1..1000; default 50)")
+          ->each([o](const std::string&) { o->digits_given = true; });
+      sub.add_option("--points", o->points, "CSV file: a header naming the parameters, one point per row");
+      sub.add_option("-o", o->output, "with --points: write the results as CSV here (default stdout)");
+      o->budget.add_to(sub, true);
       return [o] { return run(*o); };
     });
 

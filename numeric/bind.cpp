@@ -43,13 +43,19 @@ GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
   std::set<std::string> bound;
   for (const auto& [name, value] : values) {
     auto it = std::find(names.begin(), names.end(), name);
-    if (it == names.end())
+    const SymbolInfo* info = d.symbols.find(name);
+    if (it == names.end() && !(info && !info->is_function))
       throw std::domain_error("unknown parameter '" + name + "': formula '" + f.label +
                               "' has parameters " + join(names));
-    const SymbolInfo* info = d.symbols.find(name);
     if (info && !info->domain.contains(value))
       throw std::domain_error("parameter '" + name + "' = " + exact_text(value) +
                               " is outside its declared domain (" + info->domain.to_string() + ")");
+    if (it == names.end()) {
+      // a declared symbol that cancelled out of the formula ((m*v^2)/(m*v) has no m): its
+      // value is checked against its domain and the assumptions, and changes nothing
+      point[info->sym] = value;
+      continue;
+    }
     // the table's symbol (a possymbol for positive symbols), not the sliced copy in f.params
     point[info ? info->sym : GiNaC::ex(f.params[static_cast<std::size_t>(it - names.begin())])] = value;
     bound.insert(name);

@@ -29,7 +29,8 @@ GiNaC::numeric reference_value(const GiNaC::ex& e, const GiNaC::exmap& point, in
 std::vector<std::pair<std::string, GiNaC::numeric>> parse_assignments(const std::string& text);
 
 // Binds values to the parameters of formula `f` of derivation `d`, checking: every name is a
-// parameter of the formula, every parameter has a value, each value lies in its symbol's
+// parameter of the formula or a declared symbol that cancelled out of it (its value is checked
+// and changes nothing), every parameter has a value, each value lies in its symbol's
 // declared domain, and the file's `assume` constraints that involve only bound symbols hold.
 // Throws std::domain_error naming the parameter, value and bound (or constraint).
 GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
