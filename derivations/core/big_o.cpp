@@ -86,4 +86,53 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
   return v;
 }
 
+namespace {
+bool is_order_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "O" && n.args.size() == 1; }
+}  // namespace
+
+bool split_order_term(const Node& side, Node& rest, Node& arg) {
+  if (is_order_call(side)) {
+    arg = side.args[0];
+    rest = Node{};
+    rest.kind = NodeKind::Number;
+    rest.text = "0";
+    rest.pos = side.pos;
+    return true;
+  }
+  if ((side.kind == NodeKind::Add || side.kind == NodeKind::Sub) && !side.parenthesized) {
+    if (is_order_call(side.args[1])) {
+      arg = side.args[1].args[0];
+      rest = side.args[0];
+      return true;
+    }
+    if (side.kind == NodeKind::Add && is_order_call(side.args[0])) {
+      arg = side.args[0].args[0];
+      rest = side.args[1];
+      return true;
+    }
+  }
+  return false;
+}
+
+std::optional<int> order_of_term(const ex& g, const GiNaC::symbol& x, const ex& point, int at_infinity,
+                                 std::string* why) {
+  const ex base = at_infinity ? ex(x) : ex(x - point);
+  long n = 0;
+  if (g.is_equal(base)) {
+    n = 1;
+  } else if (GiNaC::is_a<GiNaC::power>(g) && g.op(0).is_equal(base) && GiNaC::is_a<GiNaC::numeric>(g.op(1)) &&
+             GiNaC::ex_to<GiNaC::numeric>(g.op(1)).is_integer() &&
+             std::abs(GiNaC::ex_to<GiNaC::numeric>(g.op(1)).to_long()) < 100000) {
+    n = GiNaC::ex_to<GiNaC::numeric>(g.op(1)).to_long();
+  } else if (at_infinity == 0 && g.is_equal(1)) {
+    n = 0;
+  } else {
+    if (why)
+      *why = std::string("the order term must be ") + (at_infinity ? "O(var^-N)" : "O((var - point)^N)") +
+             " for an integer N";
+    return std::nullopt;
+  }
+  return static_cast<int>(at_infinity ? -n : n);
+}
+
 }  // namespace dc

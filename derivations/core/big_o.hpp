@@ -9,10 +9,12 @@
 //   * anything else (no limit, e.g. a bounded oscillation x^5 sin(1/x); undecided limits) ->
 //     undecided with the reason. Boundedness without a limit is never guessed.
 #pragma once
+#include <optional>
 #include <string>
 
 #include <ginac/ginac.h>
 
+#include "derivations/core/expr.hpp"
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/verdict.hpp"
 
@@ -27,5 +29,15 @@ Verdict remainder_is_big_o(const GiNaC::ex& remainder, const GiNaC::symbol& x, c
 // "O(x^3)", "O((x - 1)^2)", "O(x^-2) as x -> oo": the gauge as text, for messages.
 std::string big_o_text(const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity, int order,
                        const SymbolTable& ctx);
+
+// A side that ends in its order term, as textbooks and other systems write a truncated series:
+// `x - x^3/6 + O(x^5)` gives rest `x - x^3/6` and arg `x^5`; `O(x^2)` alone gives rest 0.
+// False when the side has no top-level O(...) term.
+bool split_order_term(const Node& side, Node& rest, Node& arg);
+
+// The order N of O(g): g = (x - point)^N (x^N at point 0), or g = x^-N as x -> +-oo (O(x^-2)
+// gives 2). nullopt, with `why`, for any other gauge.
+std::optional<int> order_of_term(const GiNaC::ex& g, const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity,
+                                 std::string* why);
 
 }  // namespace dc

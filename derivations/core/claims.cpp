@@ -535,40 +535,19 @@ class ClaimLine {
 
   // series: a right-hand side may end in its order term, `x - x^3/6 + O(x^5)`, as other systems
   // print it; the term is taken off and gives the order (checked against "order" if given).
-  static bool is_big_o(const Node& n) { return n.kind == NodeKind::Call && n.text == "O" && n.args.size() == 1; }
   Node strip_big_o(const Node& n) {
-    auto found = [&](const Node& o) { big_o_ = o.args[0]; };
-    if (is_big_o(n)) {
-      found(n);
-      return parse_field("rhs", "0");
-    }
-    if ((n.kind == NodeKind::Add || n.kind == NodeKind::Sub) && !n.parenthesized) {
-      if (is_big_o(n.args[1])) {
-        found(n.args[1]);
-        return n.args[0];
-      }
-      if (n.kind == NodeKind::Add && is_big_o(n.args[0])) {
-        found(n.args[0]);
-        return n.args[1];
-      }
-    }
-    return n;
+    Node rest, arg;
+    if (!split_order_term(n, rest, arg)) return n;
+    big_o_ = arg;
+    return rest;
   }
 
   // The order N of an O(...) term: O((x - p)^N), O(x^N) at p = 0, O(x^-N) at infinity.
   int order_of_big_o(const GiNaC::symbol& x, const ex& p) {
-    ex g = to_ginac(*big_o_, table_);
-    const ex base = point_infinite_ ? ex(x) : ex(x - p);
-    long n = 0;
-    if (g.is_equal(base)) n = 1;
-    else if (GiNaC::is_a<GiNaC::power>(g) && g.op(0).is_equal(base) && GiNaC::is_a<GiNaC::numeric>(g.op(1)) &&
-             GiNaC::ex_to<GiNaC::numeric>(g.op(1)).is_integer())
-      n = GiNaC::ex_to<GiNaC::numeric>(g.op(1)).to_long();
-    else if (point_infinite_ == 0 && g.is_equal(1)) n = 0;
-    else
-      throw LineError{"the order term must be " + std::string(point_infinite_ ? "O(var^-N)" : "O((var - point)^N)") +
-                      " for an integer N, got O(" + to_text(*big_o_) + ")"};
-    return static_cast<int>(point_infinite_ ? -n : n);
+    std::string why;
+    std::optional<int> n = order_of_term(to_ginac(*big_o_, table_), x, p, point_infinite_, &why);
+    if (!n) throw LineError{why + ", got O(" + to_text(*big_o_) + ")"};
+    return *n;
   }
 
   // limit: "dir": "+" (from above), "-" (from below); absent or "+-": two-sided.

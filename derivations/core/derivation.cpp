@@ -10,6 +10,7 @@
 #include <functional>
 #include <set>
 
+#include "derivations/core/big_o.hpp"
 #include "derivations/core/io.hpp"
 #include "derivations/core/prose.hpp"
 #include "derivations/core/prove.hpp"
@@ -676,6 +677,7 @@ class Reader {
                             join(kRuleNames, ", ") + ")",
            static_cast<int>(h.label.size()));
 
+    if (step.rule.name == "series") order_term(step);
     // Symbols: a definition introduces its left-hand side.
     if (step.rule.name == "definition") introduce_definition(step);
     // Undefined symbols (and other conversion errors) in the claim; for an erratum step the
@@ -699,6 +701,35 @@ class Reader {
     for (const auto& w : step.rule.with) note_names(w.equation);
     defined_[step.label] = d_.steps.size();
     d_.steps.push_back(std::move(step));
+  }
+
+  // `by series x -> p [to order N]` with a claim whose last side ends in `+ O(gauge)`: the term
+  // gives the order (and must agree with `to order N` when both are written).
+  void order_term(Step& step) {
+    Node& last = step.claim.sides.back();
+    Node rest, arg;
+    if (step.claim.sides.size() < 2 || !split_order_term(last, rest, arg)) return;
+    const RuleSpec& r = step.rule;
+    if (!r.var || !r.point) return;   // the rule's own checks report the missing point
+    validate(arg);
+    const GiNaC::ex g = to_ginac(arg, d_.symbols);
+    const GiNaC::ex x = to_ginac(r.var->value, d_.symbols);
+    if (!GiNaC::is_a<GiNaC::symbol>(x)) return;
+    const Node& pt = r.point->value;
+    const bool oo = pt.kind == NodeKind::Symbol && pt.text == "oo";
+    const bool minus_oo = pt.kind == NodeKind::Neg && pt.args[0].kind == NodeKind::Symbol && pt.args[0].text == "oo";
+    const int inf = oo ? 1 : minus_oo ? -1 : 0;
+    const GiNaC::ex p = inf ? GiNaC::ex(0) : to_ginac(pt, d_.symbols);
+    std::string why;
+    std::optional<int> n = order_of_term(g, GiNaC::ex_to<GiNaC::symbol>(x), p, inf, &why);
+    if (!n) fail(arg.pos, why + ", got O(" + to_text(arg) + ")", arg.length);
+    if (r.order && *r.order != *n)
+      fail(arg.pos, "the claim ends in O(" + to_text(arg) + "), order " + std::to_string(*n) + ", but the rule says 'to order " +
+                        std::to_string(*r.order) + "'",
+           arg.length);
+    step.rule.order = *n;
+    step.order_term = arg;
+    last = rest;
   }
 
   // See Step::names_result.

@@ -69,6 +69,9 @@ struct Step {
   bool names_result = false;
   std::string stable_regime;
   bool hidden = false;       // `hide`: checked, but left out of the handout (--annotate shows it)
+  // `by series`: the claim's last side ended in an order term, `x - x^3/6 + O(x^5)`; the term
+  // was taken off the claim (it gives rule.order) and is kept here for printing.
+  std::optional<Node> order_term;
 };
 
 // Literate text between the steps (docs/format.md, "Text"): what `derivcheck latex` prints

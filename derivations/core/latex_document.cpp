@@ -23,7 +23,10 @@ std::string basename_of(const std::string& path) {
 
 // What the handout shows for a step: a `by limit x -> p` step without `of` states
 // "f = L" meaning "f -> L as x -> p", so its first side is shown as the limit it means.
-Relation displayed_claim(const Step& s, const Relation& claim) {
+Relation with_order_term(const Step& s, const Relation& claim);
+
+Relation displayed_claim(const Step& s, const Relation& claim_in) {
+  const Relation claim = with_order_term(s, claim_in);
   if (s.rule.name != "limit" || !s.rule.into.empty() || claim.sides.size() < 2 || !s.rule.var || !s.rule.point)
     return claim;
   const Node& f = claim.sides[0];
@@ -41,6 +44,28 @@ Relation displayed_claim(const Step& s, const Relation& claim) {
     lim.args.push_back(side);
   }
   shown.sides[0] = std::move(lim);
+  return shown;
+}
+
+// A series step's order term, taken off the claim by the reader, is printed where it was written.
+Relation with_order_term(const Step& s, const Relation& claim) {
+  if (!s.order_term || claim.sides.empty()) return claim;
+  Relation shown = claim;
+  Node o;
+  o.kind = NodeKind::Call;
+  o.text = "O";
+  o.pos = s.order_term->pos;
+  o.args = {*s.order_term};
+  Node& last = shown.sides.back();
+  if (last.kind == NodeKind::Number && last.text == "0") {
+    last = o;
+  } else {
+    Node sum;
+    sum.kind = NodeKind::Add;
+    sum.pos = last.pos;
+    sum.args = {last, o};
+    last = std::move(sum);
+  }
   return shown;
 }
 

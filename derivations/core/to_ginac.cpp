@@ -82,6 +82,11 @@ std::string number_text(const GiNaC::numeric& x) {
 
 const SymbolInfo& lookup_symbol(const Node& n, const SymbolTable& table) {
   const SymbolInfo* info = table.find(n.text);
+  if (!info && n.text == "O")
+    throw InputError(n.pos,
+                     "an order term O(...) may only end the last side of a 'by series' step "
+                     "('sin(x) = x - x^3/6 + O(x^5)') or the rhs of a series claim",
+                     1);
   if (!info)
     throw InputError(n.pos,
                      "undefined symbol '" + n.text + "': declare it with 'symbol " + n.text +
@@ -138,6 +143,11 @@ int infinity_sign(const Node& n) {
 
 const SymbolInfo& declared_function(const Node& n, const SymbolTable& table) {
   const SymbolInfo* info = table.find(n.text);
+  if (!info && n.text == "O")
+    throw InputError(n.pos,
+                     "an order term O(...) may only end the last side of a 'by series' step "
+                     "('sin(x) = x - x^3/6 + O(x^5)') or the rhs of a series claim",
+                     1);
   if (!info)
     throw InputError(n.pos,
                      "unknown function '" + n.text + "': built-in functions are " + kBuiltinList +
