@@ -34,6 +34,7 @@ std::string encode(const std::vector<num::FormulaReport>& reports) {
       w.str(*s);
     w.u64(r.in_regime);
     w.u64(r.rejected);
+    w.u64(r.reference_not_double);
     w.u64(r.methods.size());
     for (const auto& m : r.methods) {
       w.str(m.method);
@@ -55,6 +56,7 @@ std::vector<num::FormulaReport> decode(const std::string& bytes) {
     for (auto* s : {&r.file, &r.label, &r.target, &r.stable_label, &r.stable_regime, &r.stable_of, &r.skipped}) *s = rd.str();
     r.in_regime = rd.u64();
     r.rejected = rd.u64();
+    r.reference_not_double = rd.u64();
     r.methods.resize(rd.u64());
     for (auto& m : r.methods) {
       m.method = rd.str();

@@ -51,6 +51,9 @@ struct FormulaReport {
   std::string stable_of;       // this formula is itself the stable form of ...
   std::string skipped;         // non-empty: why it is not evaluated (e.g. abstract functions)
   std::size_t rejected = 0;    // candidate points outside constraints or where undefined
+  // of those: points where the formula is defined but its value is not a finite double (it
+  // overflows): no method can be right there, so they are left out of every summary
+  std::size_t reference_not_double = 0;
   std::vector<MethodStats> methods;
 };
 
@@ -68,7 +71,10 @@ std::vector<SamplePoint> crosscheck_points(const Derivation& d, const Formula& f
 
 // The method with the smallest max error among those that return a double ("double", "stable",
 // "compensated"; "long double" is not a double result). nullptr if none was evaluated.
-const MethodStats* best_method(const FormulaReport& r);
+// Regime: over all points, over the random points only, or over the stress points only (a
+// method that overflows at one stress point is not the worst everywhere).
+enum class Regime { All, Random, Stress };
+const MethodStats* best_method(const FormulaReport& r, Regime regime = Regime::All);
 
 // Human-readable table (deterministic for a given seed).
 std::string format_crosscheck(const std::vector<FormulaReport>& reports, const CrossCheckOptions& opt);

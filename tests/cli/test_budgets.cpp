@@ -127,7 +127,12 @@ TEST_CASE("crosscheck: a formula whose reference cannot be computed in budget is
   Run r = run({"crosscheck", src("tests/data/runaway/stress.dc"), "--step-timeout", "500ms"}, 300);
   CAPTURE(r.out, r.err);
   CHECK(r.exit_code == 0);
-  CHECK(r.out.find("f: not evaluated: time budget 0.5 s exceeded") != std::string::npos);
+  CHECK(r.out.find("p: not evaluated: ") != std::string::npos);
+  CHECK(r.out.find("budget") != std::string::npos);
+  // exp(2*1e160) is not a double: Arb says so at once, and those points are left out (the CLN
+  // reference used to run out of budget there, or wrap its exponent silently)
+  CHECK(r.out.find("f: not evaluated") == std::string::npos);
+  CHECK(r.out.find("left out: the true value is not a finite double there") != std::string::npos);
 }
 
 TEST_CASE("budget flags: malformed values are input errors", "[cli][budgets][errors]") {
