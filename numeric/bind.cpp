@@ -78,6 +78,20 @@ GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
   return point;
 }
 
+std::optional<kernel::Ball> enclose_formula(const GiNaC::ex& e, const GiNaC::exmap& point, long prec,
+                                            std::string* why) {
+  kernel::Ball b = kernel::enclose_at(e, &point, prec);
+  if (b.status == kernel::BallStatus::NotReal)
+    throw std::domain_error("the formula has no real value at this point (" + b.why + ")");
+  if (b.status == kernel::BallStatus::Pole)
+    throw std::domain_error("the formula is undefined at this point (" + b.why + ")");
+  if (b.status != kernel::BallStatus::Value) {
+    if (why) *why = b.why;
+    return std::nullopt;
+  }
+  return b;
+}
+
 std::string eval_formula(const Derivation& d, const std::string& label, const std::string& at,
                          int digits) {
   if (digits < 1 || digits > 1000)
@@ -91,15 +105,9 @@ std::string eval_formula(const Derivation& d, const std::string& label, const st
   const long want_bits = static_cast<long>(digits * 3.33) + 16;
   std::string why = "the enclosure did not narrow";
   for (long prec = want_bits + 48; prec <= (1L << 18); prec *= 2) {
-    kernel::Ball b = kernel::enclose_at(f.expr, &point, prec);
-    if (b.status == kernel::BallStatus::NotReal)
-      throw std::domain_error("the formula has no real value at this point (" + b.why + ")");
-    if (b.status == kernel::BallStatus::Pole)
-      throw std::domain_error("the formula is undefined at this point (" + b.why + ")");
-    if (b.status != kernel::BallStatus::Value) {
-      why = b.why;
-      continue;
-    }
+    std::optional<kernel::Ball> enclosed = enclose_formula(f.expr, point, prec, &why);
+    if (!enclosed) continue;
+    const kernel::Ball& b = *enclosed;
     GiNaC::numeric lo, hi;
     if (!b.exact_bounds(lo, hi)) {   // beyond 2^(2^20): shown as 10^(x) once x is known well
       if (b.rel_accuracy_bits() >= 48) return b.text(digits);

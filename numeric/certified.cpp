@@ -40,15 +40,9 @@ Enclosure enclose_until(const Formula& f, const GiNaC::exmap& point, Good good, 
   std::string why = "the enclosure did not narrow";
   bool have = false;
   for (long prec = kStartBits; prec <= kMaxBits; prec *= 2) {
-    kernel::Ball b = kernel::enclose_at(f.expr, &point, prec);
-    if (b.status == kernel::BallStatus::NotReal)
-      throw std::domain_error("the formula has no real value at this point (" + b.why + ")");
-    if (b.status == kernel::BallStatus::Pole)
-      throw std::domain_error("the formula is undefined at this point (" + b.why + ")");
-    if (b.status != kernel::BallStatus::Value) {
-      why = b.why;
-      continue;
-    }
+    std::optional<kernel::Ball> enclosed = enclose_formula(f.expr, point, prec, &why);
+    if (!enclosed) continue;
+    const kernel::Ball& b = *enclosed;
     e.bits = prec;
     numeric lo, hi;
     if (!b.exact_bounds(lo, hi)) {

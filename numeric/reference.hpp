@@ -7,6 +7,7 @@
 // otherwise the precision is raised (up to 2000 digits) before giving up. GiNaC::Digits is a
 // process-wide global and is restored afterwards (dc::DigitsGuard).
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include <ginac/ginac.h>
 
 #include "derivations/core/derivation.hpp"
+#include "derivations/kernel/ball.hpp"
 
 namespace dc::num {
 
@@ -35,6 +37,12 @@ std::vector<std::pair<std::string, GiNaC::numeric>> parse_assignments(const std:
 // Throws std::domain_error naming the parameter, value and bound (or constraint).
 GiNaC::exmap bind_point(const Derivation& d, const Formula& f,
                         const std::vector<std::pair<std::string, GiNaC::numeric>>& values);
+
+// Arb's enclosure of `e` at `point` with `prec` bits: the ball when it is a finite real
+// enclosure; nullopt (and the reason in `why`) when this precision cannot decide. Throws
+// std::domain_error when the formula certainly has no real value there or divides by zero.
+std::optional<kernel::Ball> enclose_formula(const GiNaC::ex& e, const GiNaC::exmap& point, long prec,
+                                            std::string* why);
 
 // `derivcheck eval`: the formula's value at the point, printed with `digits` significant
 // digits (format_significant: deterministic).
