@@ -21,7 +21,7 @@ struct LatexCliOptions {
   std::string output;
   std::string title;
   std::string subtitle;
-  bool fragment = false, annotate = false, allow_unchecked = false;
+  bool fragment = false, annotate = false, allow_unchecked = false, units = false;
   BudgetFlags budget;
 };
 
@@ -59,6 +59,7 @@ int run(const LatexCliOptions& o) {
   LatexOptions lo;
   lo.fragment = o.fragment;
   lo.annotate = o.annotate;
+  lo.units = o.units;
   lo.title = o.title;
   lo.subtitle = o.subtitle;
   lo.checks = &checks;
@@ -80,7 +81,8 @@ const CommandRegistrar registrar(
           ->required();
       sub.add_option("-o,--output", o->output, "output .tex file (written atomically; '-' or none: stdout)");
       sub.add_flag("--fragment", o->fragment, "no preamble: sections to \\input into a document with amsmath, amssymb");
-      sub.add_flag("--annotate", o->annotate, "each step's rule and verdict as a margin note, and its notes");
+      sub.add_flag("--annotate", o->annotate, "each step's rule and verdict on a line under it, and its notes");
+      sub.add_flag("--units", o->units, "each section lists its quantities with their units (needs siunitx)");
       sub.add_option("--title", o->title, "document title (default: the derivation's title)");
       sub.add_option("--subtitle", o->subtitle, "a line under the title");
       sub.add_flag("--allow-unchecked", o->allow_unchecked,

@@ -5,7 +5,7 @@ set -euo pipefail
 pkgs=(g++ cmake make pkg-config
       libginac-dev libcln-dev libflint-arb-dev libeigen3-dev catch2 libboost-dev libbenchmark-dev
       nlohmann-json3-dev libcli11-dev gnuplot-nox parallel
-      texlive-latex-base texlive-latex-recommended texlive-pictures poppler-utils)
+      texlive-latex-base texlive-latex-recommended texlive-pictures texlive-science poppler-utils)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -45,6 +45,7 @@ struct LatexStyle {
 struct LatexOptions {
   bool fragment = false;     // no preamble / \begin{document}: pieces to \input
   bool annotate = false;     // each step on its own, a line with its rule and verdict and its notes under it
+  bool units = false;        // each section lists its quantities with their units (siunitx)
   std::string title;         // document title (standalone); default: the derivation's title
   std::string subtitle;      // a line under the title (standalone), may be empty
   // Check results for `annotate` (one per derivation, same order, from dc::check_derivation);

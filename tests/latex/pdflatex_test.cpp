@@ -139,6 +139,24 @@ TEST_CASE("emitted handout compiles with pdflatex", "[latex][pdflatex]") {
     CAPTURE(warnings);
     CHECK(warnings.empty());
   }
+  SECTION("with --units: the quantities and their units (siunitx), no overfull box") {
+    if (std::system("kpsewhich siunitx.sty > /dev/null 2>&1") != 0) {
+      WARN("siunitx not installed: --units compile test skipped (tools/install-deps.sh installs texlive-science)");
+      return;
+    }
+    opt.units = true;
+    std::string tex = dc::write_latex(ptrs, opt);
+    CHECK(tex.find("\\usepackage{siunitx}") != std::string::npos);
+    CHECK(tex.find("$m_1$, $m_2$ in \\si{kg}; $v_1$, $v_2$, $v'_1$, $v'_2$ in \\si{m/s}") != std::string::npos);
+    CHECK(tex.find("$\\Delta T$, $T'$ in \\si{J}") != std::string::npos);
+    Compiled c = compile("units", tex);
+    INFO(c.failure);
+    REQUIRE(c.failure.empty());
+    auto warnings = layout_warnings(c.log);
+    CAPTURE(warnings);
+    CHECK(warnings.empty());
+    if (!c.text.empty()) CHECK(c.text.find("Quantities.") != std::string::npos);
+  }
   SECTION("fragment \\input into a plain article with amsmath only: no overfull box") {
     opt.fragment = true;
     std::string frag = dc::write_latex(ptrs, opt);
