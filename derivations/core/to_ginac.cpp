@@ -11,8 +11,8 @@
 //    than 10000 decimal digits (estimated as |n| * log10(max(|num|, den)) from bit lengths), or
 //  * the exponent is a non-integer number with |exponent| > 1000.
 // Nested exponents are checked bottom-up, so 2^(10^(10^10)) fails at the inner power.
-#include <optional>
 #include <algorithm>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -80,13 +80,17 @@ std::string number_text(const GiNaC::numeric& x) {
   return s;
 }
 
+// O(...) is not a function or symbol of the file: it only ends a series claim (big_o.hpp).
+[[noreturn]] void misplaced_order_term(const Node& n) {
+  throw InputError(n.pos,
+                   "an order term O(...) may only end the last side of a 'by series' step "
+                   "('sin(x) = x - x^3/6 + O(x^5)') or the rhs of a series claim",
+                   1);
+}
+
 const SymbolInfo& lookup_symbol(const Node& n, const SymbolTable& table) {
   const SymbolInfo* info = table.find(n.text);
-  if (!info && n.text == "O")
-    throw InputError(n.pos,
-                     "an order term O(...) may only end the last side of a 'by series' step "
-                     "('sin(x) = x - x^3/6 + O(x^5)') or the rhs of a series claim",
-                     1);
+  if (!info && n.text == "O") misplaced_order_term(n);
   if (!info)
     throw InputError(n.pos,
                      "undefined symbol '" + n.text + "': declare it with 'symbol " + n.text +
@@ -143,11 +147,7 @@ int infinity_sign(const Node& n) {
 
 const SymbolInfo& declared_function(const Node& n, const SymbolTable& table) {
   const SymbolInfo* info = table.find(n.text);
-  if (!info && n.text == "O")
-    throw InputError(n.pos,
-                     "an order term O(...) may only end the last side of a 'by series' step "
-                     "('sin(x) = x - x^3/6 + O(x^5)') or the rhs of a series claim",
-                     1);
+  if (!info && n.text == "O") misplaced_order_term(n);
   if (!info)
     throw InputError(n.pos,
                      "unknown function '" + n.text + "': built-in functions are " + kBuiltinList +
@@ -222,8 +222,7 @@ class Converter {
   // polynomial in the variable (GiNaC integrates it exactly; eval_integ would also "integrate"
   // 1/x across 0, so nothing else). Otherwise the step is undecided, saying so; as a whole side
   // `integral(f, x, a, b) = G` the integrate rule and `equal` check it by other means.
-  GiNaC::ex integral_value(const Node& n) {
-    IntegralParts p = integral_parts(n);
+  GiNaC::ex integral_value(const Node& n, const IntegralParts& p) {
     if (!p.f.is_polynomial(p.t))
       throw UndecidedLimit("'" + short_text(n) + "' inside an expression is evaluated only for a polynomial "
                                "integrand; as a whole side, integral(f, x, a, b) = G, it is checked by 'integrate' "
@@ -239,8 +238,7 @@ class Converter {
   // d/dx of integral(f, t, a, b) = f(b) db/dx - f(a) da/dx (Leibniz's rule) when f does not
   // contain x and is continuous in t on the whole line; nullopt otherwise (then the integral
   // must have a value of its own, and that is differentiated).
-  std::optional<GiNaC::ex> leibniz(const Node& in, const GiNaC::symbol& x) {
-    IntegralParts p = integral_parts(in);
+  std::optional<GiNaC::ex> leibniz(const Node& in, const IntegralParts& p, const GiNaC::symbol& x) {
     if (p.f.has(x) || p.t.is_equal(x) || !continuous_everywhere(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t))) {
       if (p.f.is_polynomial(p.t)) return std::nullopt;
       throw UndecidedLimit("d/d" + x.get_name() + " of '" + short_text(in) + "': Leibniz's rule is applied only to "
@@ -375,10 +373,15 @@ class Converter {
       check_count(n, 2, 3, "2 or 3 arguments: diff(f, x) or diff(f, x, n)");
       const SymbolInfo& x = variable_arg(n, n.args[1], table_);
       int order = diff_order(n);
-      if (order == 1 && is_integral_call(n.args[0])) {
-        if (auto d = leibniz(n.args[0], GiNaC::ex_to<GiNaC::symbol>(x.sym))) return *d;
+      GiNaC::ex body;
+      if (is_integral_call(n.args[0])) {
+        const IntegralParts parts = integral_parts(n.args[0]);
+        if (order == 1)
+          if (auto d = leibniz(n.args[0], parts, GiNaC::ex_to<GiNaC::symbol>(x.sym))) return *d;
+        body = integral_value(n.args[0], parts);
+      } else {
+        body = conv(n.args[0]);
       }
-      GiNaC::ex body = conv(n.args[0]);
       return guarded(n, [&] { return body.diff(GiNaC::ex_to<GiNaC::symbol>(x.sym), static_cast<unsigned>(order)); });
     }
     if (f == "limit") {
@@ -412,7 +415,7 @@ class Converter {
                          n.length);
       return r.value;
     }
-    if (f == "integral") return integral_value(n);
+    if (f == "integral") return integral_value(n, integral_parts(n));
     const SymbolInfo& info = declared_function(n, table_);
     if (info.params.size() != 1)
       throw InputError(n.pos, "functions of several variables are not supported", n.length);
