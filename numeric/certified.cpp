@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "derivations/kernel/ball.hpp"
+#include "numeric/certified_fast.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/exact.hpp"
 #include "numeric/formula_evaluator.hpp"
@@ -84,6 +85,45 @@ std::string values_text(const std::vector<std::pair<std::string, numeric>>& v) {
   return s;
 }
 
+// The fast first try of Auto: the tape in long double with a running error bound
+// (certified_fast.hpp). nullopt when it cannot decide the rounding: the caller escalates to Arb.
+std::optional<CertifiedDouble> fast_first_try(const Derivation& d, const Formula& f, const GiNaC::exmap& point) {
+  std::vector<double> x, x_err;
+  for (const auto& s : f.params) {
+    const numeric v = GiNaC::ex_to<numeric>(point.at(d.symbols.find(s.get_name())->sym));
+    const double xd = nearest_double(v);
+    if (!std::isfinite(xd)) return std::nullopt;
+    // |v - xd| as a double, rounded up well beyond to_double's own error
+    const double err = abs_num(v - exact_rational(xd)).to_double();
+    x.push_back(xd);
+    x_err.push_back(err == 0 ? 0 : std::nextafter(err * (1 + 0x1p-40), std::numeric_limits<double>::infinity()) +
+                                       std::numeric_limits<double>::denorm_min());
+  }
+  std::optional<CertifiedTape> tape;
+  try {
+    tape.emplace(compile(f.expr, f.params));
+  } catch (const std::exception&) {
+    return std::nullopt;   // not compilable to a tape: Arb evaluates it
+  }
+  const FastCertified r = (*tape)(x.data(), x_err.data());
+  if (!r.decided) return std::nullopt;
+  CertifiedDouble out;
+  out.value = r.value;
+  char bound[32];
+  std::snprintf(bound, sizeof bound, "%.1Le", r.bound);
+  out.method = std::string("auto (correctly rounded: long double with a running error bound, ") + bound + ")";
+  if (std::isinf(r.value)) {
+    char mag[48];
+    std::snprintf(mag, sizeof mag, "%.5Le", r.approx);
+    out.note = std::string("the true value, about ") + mag + ", overflows double";
+    return out;
+  }
+  out.error_ulps = 0.5;
+  if (r.value == 0 && r.approx != 0)
+    out.note = "the true value rounds to 0 (below half the smallest subnormal)";
+  return out;
+}
+
 }  // namespace
 
 std::optional<DoubleMethod> parse_double_method(const std::string& name) {
@@ -150,6 +190,7 @@ CertifiedDouble certified_eval(const Derivation& d, const std::string& label,
 
   if (m == DoubleMethod::Auto) {
     const GiNaC::exmap point = bind_point(d, f, at);
+    if (auto fast = fast_first_try(d, f, point)) return *fast;
     Enclosure e = enclose_until(f, point, [](const numeric& lo, const numeric& hi) {
       return nearest_double(lo) == nearest_double(hi);
     }, &decided);
