@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -31,7 +32,7 @@ struct ChartArgs {
   std::string scenes = "spring,pendulum,rocket,ladder";
   std::string maps = "e_to_1,v1_to_v2,mu_to_0,m2_to_inf,theta_to_0,mr_to_m0";
   int points = 12, repeats = 5, sweep = 8, steps = 40;
-  std::string out = "docs/charts", root = ".", csv;
+  std::string out, root = ".", csv;   // out empty: a new directory (fresh_output_dir)
   // evalpoints
   std::vector<std::string> positional;
   std::string inputs, points_file, out_file;
@@ -53,6 +54,33 @@ std::string slug(std::string s) {
   for (char& c : s)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
   return s;
+}
+
+// Without -o the charts go to a new directory in the current one (derivcheck-charts, then
+// derivcheck-charts-2, ...): a run never overwrites earlier charts, nor the repository's
+// committed docs/charts, unless that directory is asked for.
+std::string fresh_output_dir() {
+  namespace fs = std::filesystem;
+  for (int i = 1;; ++i) {
+    const std::string name = i == 1 ? "derivcheck-charts" : "derivcheck-charts-" + std::to_string(i);
+    std::error_code ec;
+    if (fs::create_directory(name, ec)) return name;
+    if (ec) throw std::invalid_argument("cannot create the output directory " + name + ": " + ec.message());
+  }
+}
+
+void prepare_output(ChartArgs& a) {
+  if (a.kind == "evalpoints") return;
+  const bool one_csv = a.kind == "closed" || a.kind == "scenes" || a.kind == "checker";
+  if (one_csv && !a.csv.empty() && a.out.empty()) return;   // --csv names the one file written
+  if (a.out.empty()) {
+    a.out = fresh_output_dir();
+  } else {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) throw std::invalid_argument("cannot create the output directory " + a.out + ": " + ec.message());
+  }
+  std::cerr << "derivcheck chart: writing to " << a.out << "/\n";
 }
 
 void say_written(const std::vector<std::string>& files) {
@@ -199,7 +227,12 @@ int run_maps(const ChartArgs& a) {
       p.xlabel = info->xlabel;
       p.ylabel = "bits lost (of 53)";
       p.logy = false;
-      for (const auto& m : order) p.series.push_back(by[m]);
+      double lowest = 0;
+      for (const auto& m : order) {
+        p.series.push_back(by[m]);
+        for (const auto& q : by[m].points) lowest = std::min(lowest, q.y);
+      }
+      if (lowest >= 0) p.ymin = 0;   // nothing is gained: the axis starts at no loss
       say_written(write_figures(p, a.out + "/map_" + name));
     }
     all.insert(all.end(), rows.begin(), rows.end());
@@ -297,27 +330,27 @@ int run_checker(const ChartArgs& a) {
   const std::string corpus = a.corpus.empty() ? a.root + "/tests/data/corpus.jsonl" : a.corpus;
   const auto rows = checker_wp(corpus, o);
   if (!a.no_figures && a.csv.empty()) {
-    std::map<std::string, PlotSeries> by;
-    std::vector<std::string> order;
-    std::map<std::string, int> fa;
-    for (const auto& r : rows) fa[r.family] = std::max(fa[r.family], r.false_accepts);
-    for (const auto& r : rows) {
-      std::string name = r.family == "symbolic" ? "symbolic only"
-                         : r.family == "cascade" ? "full cascade (" + std::to_string(r.k) + " points, " + std::to_string(r.digits) + " digits)"
-                                                 : r.family + ", k = " + a.ks;
-      name += ", false accepts " + std::to_string(fa[r.family]) + (r.family == "symbolic" || r.family == "cascade" ? "" : " each");
-      if (!by.count(r.family)) order.push_back(r.family);
-      auto& s = by[r.family];
-      s.name = name;
-      s.bars = true;
-      s.points.push_back({r.accuracy, r.seconds.median, r.seconds.min, r.seconds.max});
-    }
+    // One x position per strategy (no two strategies drawn on top of each other); the series
+    // group strategies by their accuracy and false accepts, which the legend states.
     Plot p;
+    std::map<std::string, std::size_t> series_of;
+    for (const auto& r : rows) {
+      const std::string cat = r.family == "symbolic" ? "symbolic only"
+                              : r.family == "cascade" ? "full cascade (" + std::to_string(r.k) + " pts, " + std::to_string(r.digits) + " dig.)"
+                                                      : r.family + ", k = " + std::to_string(r.k);
+      char acc[64];
+      std::snprintf(acc, sizeof acc, "accuracy %.3f, %d false accept%s", r.accuracy, r.false_accepts,
+                    r.false_accepts == 1 ? "" : "s");
+      auto [it, fresh] = series_of.emplace(acc, p.series.size());
+      if (fresh) p.series.push_back({acc, {}, true, false});
+      const double x = static_cast<double>(p.xcategories.size());
+      p.xcategories.push_back(cat);
+      p.series[it->second].points.push_back({x, r.seconds.median, r.seconds.min, r.seconds.max});
+    }
     p.title = "Work-precision of the checker: " + std::to_string(rows.front().claims) + " labelled claims (tests/data/corpus.jsonl)";
-    p.xlabel = "verdict accuracy (fraction judged correctly; undecided = not correct) [1]";
+    p.xlabel = "strategy (colour: verdict accuracy, undecided counted as not correct)";
     p.ylabel = "time per claim [s]";
     p.logx = false;
-    for (const auto& f : order) p.series.push_back(by[f]);
     say_written(write_figures(p, a.out + "/wp_checker"));
   }
   const std::string csv = a.csv.empty() ? a.out + "/wp_checker.csv" : a.csv;
@@ -391,7 +424,7 @@ const dc::cli::CommandRegistrar reg(
       sub.add_option("--repeats", a->repeats, "timing repeats (median, min, max)")->capture_default_str()->check(CLI::PositiveNumber);
       sub.add_option("--sweep", a->sweep, "scenes: steps/tolerances per integrator")->capture_default_str()->check(CLI::PositiveNumber);
       sub.add_option("--steps", a->steps, "maps: points along the stress axis")->capture_default_str()->check(CLI::Range(2, 100000));
-      sub.add_option("--out", a->out, "output directory")->capture_default_str();
+      sub.add_option("-o,--out", a->out, "output directory (created; default: a new directory ./derivcheck-charts[-N])");
       sub.add_option("--root", a->root, "project root (for derivations/handout9)")->capture_default_str();
       sub.add_option("--csv", a->csv, "write only this CSV (no figures)");
       sub.add_option("--corpus", a->corpus, "checker: labelled claim corpus (default ROOT/tests/data/corpus.jsonl)");
@@ -403,6 +436,7 @@ const dc::cli::CommandRegistrar reg(
       sub.add_option("--out-file", a->out_file, "evalpoints: raw float64 results");
       return [a]() -> int {
         try {
+          prepare_output(*a);
           if (a->kind == "closed") return run_closed(*a);
           if (a->kind == "scenes") return run_scenes(*a);
           if (a->kind == "maps") return run_maps(*a);

@@ -48,6 +48,11 @@ std::string tex_escape(const std::string& s) {
   return o;
 }
 
+// High-contrast colours on white (Okabe and Ito's palette without its yellow, then darker
+// tones): series i uses kColours[i % 10].
+const char* const kColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#000000",
+                                "#E69F00", "#56B4E9", "#882255", "#117733", "#332288"};
+
 bool have_gnuplot() {
   return std::system("command -v gnuplot >/dev/null 2>&1") == 0;
 }
@@ -61,7 +66,33 @@ bool plottable(const Plot& p, const PlotPoint& q) {
   return true;
 }
 
-std::string gnuplot_script(const Plot& p, const std::string& terminal, const std::string& out_path) {
+Plot merge_identical_series(const Plot& in) {
+  Plot p = in;
+  p.series.clear();
+  auto drawn = [&](const PlotSeries& s) {
+    std::vector<std::pair<double, double>> v;
+    for (const auto& q : s.points)
+      if (plottable(in, q)) v.emplace_back(q.x, q.y);
+    return v;
+  };
+  std::vector<bool> used(in.series.size(), false);
+  for (std::size_t i = 0; i < in.series.size(); ++i) {
+    if (used[i]) continue;
+    PlotSeries s = in.series[i];
+    const auto pts = drawn(s);
+    for (std::size_t j = i + 1; j < in.series.size() && !pts.empty(); ++j)
+      if (!used[j] && in.series[j].bars == s.bars && drawn(in.series[j]) == pts) {
+        s.name += " = " + in.series[j].name;
+        used[j] = true;
+      }
+    p.series.push_back(std::move(s));
+  }
+  return p;
+}
+
+std::string gnuplot_script(const Plot& in, const std::string& terminal, const std::string& out_path) {
+  const Plot p = merge_identical_series(in);
+  const bool categorical = !p.xcategories.empty();
   std::ostringstream o;
   if (terminal == "svg")
     o << "set terminal svg size 900,600 dynamic enhanced font 'Helvetica,13' background rgb 'white'\n";
@@ -70,10 +101,22 @@ std::string gnuplot_script(const Plot& p, const std::string& terminal, const std
   o << "set output " << gp_quote(out_path) << "\n";
   o << "set title " << gp_quote(p.title) << " noenhanced\n";
   o << "set xlabel " << gp_quote(p.xlabel) << " noenhanced\nset ylabel " << gp_quote(p.ylabel) << " noenhanced\n";
-  if (p.logx) o << "set logscale x\nset format x '10^{%L}'\n";
+  if (p.logx && !categorical) o << "set logscale x\nset format x '10^{%L}'\n";
   if (p.logy) o << "set logscale y\nset format y '10^{%L}'\n";
-  o << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\nset key outside below center maxrows 4 noenhanced\n";
-  o << "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06\n";
+  o << "set grid xtics ytics mxtics mytics lc rgb '#dddddd'\n";
+  // the legend below the x label, with a gap, one column per four entries
+  o << "set key outside below center maxrows 4 noenhanced spacing 1.2 height 1\nset xlabel offset 0,-0.3\n";
+  if (categorical) {
+    o << "set xtics (";
+    for (std::size_t i = 0; i < p.xcategories.size(); ++i)
+      o << (i ? ", " : "") << gp_quote(p.xcategories[i]) << " " << i;
+    o << ") rotate by 35 right noenhanced\nset xrange [-0.6:" << num(static_cast<double>(p.xcategories.size()) - 0.4) << "]\n";
+  }
+  const bool lo_fixed = std::isfinite(p.ymin), hi_fixed = std::isfinite(p.ymax);
+  o << "set offsets " << (categorical ? "0, 0" : "graph 0.04, graph 0.04") << ", graph " << (hi_fixed ? "0" : "0.06")
+    << ", graph " << (lo_fixed ? "0" : "0.06") << "\n";
+  if (lo_fixed || hi_fixed)
+    o << "set yrange [" << (lo_fixed ? num(p.ymin) : "*") << ":" << (hi_fixed ? num(p.ymax) : "*") << "]\n";
   o << "set border lw 1.2\nset pointsize 1.1\n";
   for (const auto& [x, label] : p.vlines)
     o << "set arrow from " << num(x) << ", graph 0 to " << num(x) << ", graph 1 nohead dt 2 lc rgb '#888888'\n"
@@ -96,12 +139,13 @@ std::string gnuplot_script(const Plot& p, const std::string& terminal, const std
     if (!any) continue;
     if (!first) o << ", \\\n     ";
     first = false;
-    const int lt = idx % 8 + 1, pt = idx % 13 + 1;
+    const std::string lc = std::string(" lc rgb '") + kColours[idx % 10] + "' lw 1.5";
+    const int pt = idx % 13 + 1;
     if (s.bars)
-      o << "$d" << idx << " using 1:2:3:4 with yerrorbars lt " << lt << " pt " << pt << " title " << gp_quote(s.name)
-        << (s.lines ? ", $d" + std::to_string(idx) + " using 1:2 with lines lt " + std::to_string(lt) + " notitle" : "");
+      o << "$d" << idx << " using 1:2:3:4 with yerrorbars" << lc << " pt " << pt << " title " << gp_quote(s.name)
+        << (s.lines ? ", $d" + std::to_string(idx) + " using 1:2 with lines" + lc + " notitle" : "");
     else
-      o << "$d" << idx << " using 1:2 with " << (s.lines ? "linespoints" : "points") << " lt " << lt << " pt " << pt
+      o << "$d" << idx << " using 1:2 with " << (s.lines ? "linespoints" : "points") << lc << " pt " << pt
         << " title " << gp_quote(s.name);
   }
   if (first) o << "1/0 notitle";
@@ -109,13 +153,25 @@ std::string gnuplot_script(const Plot& p, const std::string& terminal, const std
   return o.str();
 }
 
-std::string pgfplots(const Plot& p) {
+std::string pgfplots(const Plot& in) {
+  Plot p = merge_identical_series(in);
+  if (!p.xcategories.empty()) p.logx = false;
   std::ostringstream o;
   o << "% generated by derivcheck chart; \\usepackage{pgfplots}\n\\begin{tikzpicture}\n\\begin{"
     << (p.logx && p.logy ? "loglogaxis" : p.logx ? "semilogxaxis" : p.logy ? "semilogyaxis" : "axis") << "}[\n"
     << "  title={" << tex_escape(p.title) << "},\n  xlabel={" << tex_escape(p.xlabel) << "},\n  ylabel={"
     << tex_escape(p.ylabel) << "},\n  width=12cm, height=8cm, grid=major,\n"
-    << "  legend pos=outer north east, legend style={font=\\footnotesize},\n]\n";
+    << "  legend pos=outer north east, legend style={font=\\footnotesize},\n";
+  if (std::isfinite(p.ymin)) o << "  ymin=" << num(p.ymin) << ",\n";
+  if (std::isfinite(p.ymax)) o << "  ymax=" << num(p.ymax) << ",\n";
+  if (!p.xcategories.empty()) {
+    o << "  xtick={";
+    for (std::size_t i = 0; i < p.xcategories.size(); ++i) o << (i ? "," : "") << i;
+    o << "}, xticklabels={";
+    for (std::size_t i = 0; i < p.xcategories.size(); ++i) o << (i ? "," : "") << "{" << tex_escape(p.xcategories[i]) << "}";
+    o << "}, x tick label style={rotate=35, anchor=east, font=\\scriptsize},\n";
+  }
+  o << "]\n";
   for (const auto& s : p.series) {
     bool any = false;
     for (const auto& q : s.points) any = any || plottable(p, q);

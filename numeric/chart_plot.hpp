@@ -3,6 +3,7 @@
 // LaTeX handouts. All files are written atomically (dc::write_file_atomic; gnuplot renders
 // into a temporary file that is then renamed).
 #pragma once
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,7 +25,16 @@ struct Plot {
   std::vector<PlotSeries> series;
   // Optional vertical reference lines (x, label), e.g. omega h = 2.
   std::vector<std::pair<double, std::string>> vlines;
+  // Categorical x axis: point x = i sits at the tick labelled xcategories[i] (logx ignored).
+  std::vector<std::string> xcategories;
+  // Known bounds of the data (a fraction never exceeds 1, bits lost are never negative): the
+  // axis stops there instead of padding beyond it. NaN: automatic.
+  double ymin = std::nan(""), ymax = std::nan("");
 };
+
+// Series whose drawn points coincide exactly are merged into one, named "A = B", so that no
+// series hides under another (both writers call it).
+Plot merge_identical_series(const Plot& p);
 
 // The gnuplot script for `p` rendering to `out_path` with terminal "pngcairo" or "svg".
 std::string gnuplot_script(const Plot& p, const std::string& terminal, const std::string& out_path);

@@ -61,7 +61,7 @@ TEST_CASE("map mu -> 0: the two-ball rebound formula is well conditioned (no for
   for (const auto& [m, b] : w) CHECK(b < 2);
 }
 
-TEST_CASE("map m2 -> oo: m1 m2 overflows in the naive form; the stable step stays accurate", "[charts][maps]") {
+TEST_CASE("map m2 -> oo: m1 m2 overflows in the naive form, the stable step stays accurate", "[charts][maps]") {
   const auto rows = closed_form_map(kRoot, "m2_to_inf", 20);
   const auto w = worst(rows, [](double m2) { return m2 > 1e200; });
   CAPTURE(w);
@@ -73,21 +73,21 @@ TEST_CASE("map m2 -> oo: m1 m2 overflows in the naive form; the stable step stay
   CHECK(low.at("naive: as written") < 2);
 }
 
-TEST_CASE("map theta -> 0: acos(1 - x) loses most digits for tiny v0; the half-angle forms do not", "[charts][maps]") {
+TEST_CASE("map theta -> 0: acos(1 - x) loses most digits for tiny v0, the half-angle forms do not", "[charts][maps]") {
   const auto w = worst(closed_form_map(kRoot, "theta_to_0", 25), [](double v0) { return v0 < 1e-6; });
   CAPTURE(w);
   CHECK(w.at("naive: as written") > 40);
   CHECK(for_prefix(w, "stable: ") < 2);
 }
 
-TEST_CASE("map m_r -> m0: ln(m_r/m0) loses over 30 bits for a tiny burn fraction; log1p does not", "[charts][maps]") {
+TEST_CASE("map m_r -> m0: ln(m_r/m0) loses over 30 bits for a tiny burn fraction, log1p does not", "[charts][maps]") {
   const auto w = worst(closed_form_map(kRoot, "mr_to_m0", 15), [](double frac) { return frac < 1e-12; });
   CAPTURE(w);
   CHECK(w.at("naive: -u_e ln(m_r/m0) - g t") > 30);
   CHECK(for_prefix(w, "stable: ") < 2);
 }
 
-TEST_CASE("stiff spring: verlet blows up past omega h = 2, rk4 past 2.83, rosenbrock never; euler always grows", "[charts][maps]") {
+TEST_CASE("stiff spring: verlet blows up past omega h = 2, rk4 past 2.83, rosenbrock never, euler always grows", "[charts][maps]") {
   const auto rows = stiff_spring_map(5000, 12, 3.2);
   std::map<std::string, double> below, above;
   for (const auto& r : rows) {
@@ -142,7 +142,7 @@ TEST_CASE("closed-form work-precision: the acos form of the pendulum loses digit
     if (m.rfind("double (stable form", 0) == 0) CHECK(r.bits_lost_max < 3);
 }
 
-TEST_CASE("plots: log axes drop non-positive points; pgfplots and gnuplot describe the same series", "[charts][plot]") {
+TEST_CASE("plots: log axes drop non-positive points, pgfplots and gnuplot describe the same series", "[charts][plot]") {
   Plot p;
   p.title = "t_1 & 50%";
   p.xlabel = "x [s]";
@@ -180,7 +180,7 @@ TEST_CASE("plots: write_figures leaves complete files and no temporaries", "[cha
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("tables: CSV cells with commas or quotes are quoted; stats are median/min/max", "[charts]") {
+TEST_CASE("tables: CSV cells with commas or quotes are quoted, stats are median/min/max", "[charts]") {
   Table t{{"a", "b"}, {{"x,y", "say \"hi\""}}};
   CHECK(t.to_csv() == "a,b\n\"x,y\",\"say \"\"hi\"\"\"\n");
   const Stat s = stat_of({3, 1, 2, 10});
@@ -190,4 +190,41 @@ TEST_CASE("tables: CSV cells with commas or quotes are quoted; stats are median/
   CHECK_THROWS_AS(stat_of({}), std::invalid_argument);
   CHECK_THROWS_AS(closed_form_map(kRoot, "no_such_map", 5), std::invalid_argument);
   CHECK(fmt(HUGE_VAL) == "inf");
+}
+
+TEST_CASE("plots: no series hides under another, known bounds stop the axis, categories get one tick each",
+          "[charts][plot]") {
+  Plot p;
+  p.title = "t";
+  p.xlabel = "x";
+  p.ylabel = "bits lost";
+  p.logy = false;
+  p.series.push_back({"naive", {{1, 50, 0, 0}, {10, 3, 0, 0}}, false, true});
+  p.series.push_back({"evaluator", {{1, 50, 0, 0}, {10, 3, 0, 0}}, false, true});
+  p.series.push_back({"stable", {{1, 0.5, 0, 0}, {10, 0.2, 0, 0}}, false, true});
+  const Plot m = merge_identical_series(p);
+  REQUIRE(m.series.size() == 2);
+  CHECK(m.series[0].name == "naive = evaluator");
+  CHECK(m.series[1].name == "stable");
+  // a series equal to another only on some points stays apart
+  p.series[1].points[1].y = 4;
+  CHECK(merge_identical_series(p).series.size() == 3);
+
+  p.ymin = 0;
+  std::string gp = gnuplot_script(p, "svg", "/tmp/x.svg");
+  CHECK(gp.find("set yrange [0:*]") != std::string::npos);
+  CHECK(gp.find("graph 0.06, graph 0\n") != std::string::npos);   // no padding below the bound
+  CHECK(pgfplots(p).find("ymin=0") != std::string::npos);
+
+  Plot c;
+  c.title = "c";
+  c.xcategories = {"symbolic only", "probe 30 digits, k = 1"};
+  c.series.push_back({"accuracy 1.000", {{0, 1e-4, 1e-4, 2e-4}, {1, 2e-4, 1e-4, 3e-4}}, true, false});
+  gp = gnuplot_script(c, "svg", "/tmp/x.svg");
+  CHECK(gp.find("set xtics (\"symbolic only\" 0, \"probe 30 digits, k = 1\" 1)") != std::string::npos);
+  CHECK(gp.find("set logscale x") == std::string::npos);
+  CHECK(gp.find("set xrange [-0.6:1.6]") != std::string::npos);
+  const std::string tex = pgfplots(c);
+  CHECK(tex.find("xticklabels={{symbolic only},{probe 30 digits, k = 1}}") != std::string::npos);
+  CHECK(tex.find("semilogyaxis") != std::string::npos);
 }

@@ -155,7 +155,7 @@ TEST_CASE("formula() hands final formulas to the numeric module", "[format][form
   CHECK(dc::formulas(d).size() >= 3);
 }
 
-TEST_CASE("limit points carry a direction; oo, -oo and undefined are limit values only", "[format][rules]") {
+TEST_CASE("limit points carry a direction, oo, -oo and undefined are limit values only", "[format][rules]") {
   dc::SourceText src{"t.dc",
                      "symbol x : real [1]\n"
                      "a: 1/x = oo\n"

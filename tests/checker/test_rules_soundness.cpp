@@ -494,7 +494,7 @@ TEST_CASE("integrate does not prove a divergent integral or a jumping closed for
   CHECK_FALSE(c.at("jump").verdict.holds());
 }
 
-TEST_CASE("a chain may name a new quantity; the name never hides a wrong link", "[rules][soundness][names]") {
+TEST_CASE("a chain may name a new quantity, the name never hides a wrong link", "[rules][soundness][names]") {
   Checked c = check("names.dc",
                     "symbol t, omega : real [1]\n"
                     "symbol A : positive [m]\n"

@@ -111,7 +111,7 @@ TEST_CASE("eval: values far outside double's range are certified, never a wrong 
 }
 #endif
 
-TEST_CASE("time budget: a step over it is undecided with the budget as the reason; the others are checked",
+TEST_CASE("time budget: a step over it is undecided with the budget as the reason, the others are checked",
           "[cli][budgets]") {
   Run r = run({"check", src("tests/data/runaway/doubling.dc"), "--step-timeout", "300ms"}, 300);
   CAPTURE(r.out, r.err);

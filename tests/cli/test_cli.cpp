@@ -3,6 +3,8 @@
 // process, so this catches any leak of it). Runs the built binary DERIVCHECK_CLI.
 #include "cli/cli_run.hpp"
 
+#include <filesystem>
+
 using cli_test::run;
 using cli_test::Run;
 using cli_test::src;
@@ -147,7 +149,7 @@ TEST_CASE("equal: malformed input is an error on stderr with exit 2", "[cli][equ
   CHECK(e.err.size() < 2000);
 }
 
-TEST_CASE("claims: one JSON result per line; a malformed line does not stop the rest", "[cli][claims]") {
+TEST_CASE("claims: one JSON result per line, a malformed line does not stop the rest", "[cli][claims]") {
   Run r = run({"claims", "--no-timings", src("tests/data/cli/bank.jsonl")});
   CAPTURE(r.out, r.err);
   CHECK(r.exit_code == 2);
@@ -155,7 +157,10 @@ TEST_CASE("claims: one JSON result per line; a malformed line does not stop the 
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) lines.push_back(l);
   REQUIRE(lines.size() == 4);
-  CHECK(lines[0] == "{\"id\":\"c7\",\"kind\":\"equal\",\"verdict\":\"proved\",\"method\":\"normal\",\"detail\":\"normal(lhs - rhs) = 0\"}");
+  CHECK(lines[0] == "{\"id\":\"c7\",\"line\":1,\"kind\":\"equal\",\"verdict\":\"proved\",\"method\":\"normal\","
+                    "\"detail\":\"normal(lhs - rhs) = 0\",\"side_conditions\":[{\"condition\":\"m1 + m2 != 0\","
+                    "\"reason\":\"divisor\",\"status\":\"guaranteed\",\"evidence\":\"follows from the domains: m1 "
+                    "positive, m2 positive\"}]}");
   CHECK(lines[1].find("\"line\":2,\"verdict\":\"error\"") != std::string::npos);
   CHECK(lines[1].find("bank.jsonl:2: error: malformed JSON") != std::string::npos);
   CHECK(lines[2].find("\"id\":\"c9\"") != std::string::npos);
@@ -212,4 +217,27 @@ TEST_CASE("map: a user's files are mapped under their own name, with no invented
   CHECK(r.out.find("ctest") == std::string::npos);
   CHECK(r.out.find("# Derivation map: ") == 0);
   CHECK(r.out.find("3 steps in 1 file.") != std::string::npos);
+}
+
+TEST_CASE("chart: without -o the charts go to a new directory, never over earlier ones", "[cli][chart]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("dc_chart_out_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cd = "cd " + cli_test::quote(dir.string()) + " && ";
+  const auto first = cli_test::run({"chart", "checker", "--root", cli_test::src(""), "--repeats", "1"}, 120, cd);
+  REQUIRE(first.exit_code == 0);
+  CHECK(first.out.find("wrote derivcheck-charts/wp_checker.csv") != std::string::npos);
+  CHECK(fs::exists(dir / "derivcheck-charts" / "wp_checker.csv"));
+  const auto before = fs::last_write_time(dir / "derivcheck-charts" / "wp_checker.csv");
+  const auto second = cli_test::run({"chart", "checker", "--root", cli_test::src(""), "--repeats", "1"}, 120, cd);
+  REQUIRE(second.exit_code == 0);
+  CHECK(fs::exists(dir / "derivcheck-charts-2" / "wp_checker.csv"));
+  CHECK(fs::last_write_time(dir / "derivcheck-charts" / "wp_checker.csv") == before);
+  // -o names the directory (created with its parents)
+  const auto named = cli_test::run({"chart", "checker", "--root", cli_test::src(""), "--repeats", "1", "-o", "a/b"}, 120, cd);
+  REQUIRE(named.exit_code == 0);
+  CHECK(fs::exists(dir / "a" / "b" / "wp_checker.csv"));
+  CHECK_FALSE(fs::exists(dir / "derivcheck-charts-3"));
+  fs::remove_all(dir);
 }

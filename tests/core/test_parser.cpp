@@ -93,7 +93,7 @@ TEST_CASE("parser builds the author's tree with precedence and associativity", "
   CHECK(q.args[0].kind == NodeKind::Div);
 }
 
-TEST_CASE("numbers keep their literal text; parentheses are remembered", "[parser]") {
+TEST_CASE("numbers keep their literal text, parentheses are remembered", "[parser]") {
   Node n = parse("0.50*(x + 1)");
   REQUIRE(n.kind == NodeKind::Mul);
   CHECK(n.args[0].kind == NodeKind::Number);

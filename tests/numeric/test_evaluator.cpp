@@ -113,7 +113,7 @@ TEST_CASE("a ratio sharing symbols with its denominator is divided first", "[num
   CHECK(std::isinf(Evaluator<double>(compile(mu, {m1, m2}, off))({1e160, 1e160})));
 }
 
-TEST_CASE("constants are folded exactly rounded; rationals are not pre-rounded", "[numeric][evaluator]") {
+TEST_CASE("constants are folded exactly rounded, rationals are not pre-rounded", "[numeric][evaluator]") {
   symbol x("x");
   // x/3 is a division by 3, so 3/3 == 1 exactly
   CHECK(Evaluator<double>(compile(x / 3, {x}))({3.0}) == 1.0);

@@ -190,7 +190,7 @@ TEST_CASE("options: symbolic only, numeric only, probe points, digits", "[prove]
   REQUIRE(w.digits == 100);
 }
 
-TEST_CASE("resource limit: a runaway expansion is not attempted; the probe still decides", "[prove][limits]") {
+TEST_CASE("resource limit: a runaway expansion is not attempted, the probe still decides", "[prove][limits]") {
   test::Table T = standard_table();
   ex a = T["a"], b = T["b"];
   // false: refuted at a point, without expanding
@@ -212,7 +212,7 @@ TEST_CASE("resource limit: a runaway expansion is not attempted; the probe still
   REQUIRE(estimate_expanded_terms(GiNaC::pow(a + b + T["x"], 2)) == Approx(6));
 }
 
-TEST_CASE("constraints restrict the probe; contradictory constraints leave it undecided", "[prove][constraints]") {
+TEST_CASE("constraints restrict the probe, contradictory constraints leave it undecided", "[prove][constraints]") {
   test::Table T;
   T.add("u", Domain::real()).add("w", Domain::real());
   ex u = T["u"], w = T["w"];

@@ -109,7 +109,7 @@ TEST_CASE("check_satisfiable", "[side][satisfiable]") {
   REQUIRE(check_satisfiable(W.t) == "");
 }
 
-TEST_CASE("side conditions: sin on (0, pi) is positive; a constraint times a positive factor fixes a sign",
+TEST_CASE("side conditions: sin on (0, pi) is positive, a constraint times a positive factor fixes a sign",
           "[prove][side]") {
   test::Table T;
   T.add("g", Domain::positive()).add("l", Domain::positive());

@@ -165,7 +165,7 @@ TEST_CASE("ladder: leaves the wall at sin theta = 2/3 sin theta0 with the wall's
   CHECK(e1 / e2 > 10);
 }
 
-TEST_CASE("cradle: e = 1 passes v0 to the last ball; e < 1 conserves momentum and loses the summed dT",
+TEST_CASE("cradle: e = 1 passes v0 to the last ball, e < 1 conserves momentum and loses the summed dT",
           "[scenes][cradle]") {
   for (double n : {2.0, 3.0, 5.0, 20.0}) {
     CAPTURE(n);
