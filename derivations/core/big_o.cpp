@@ -2,6 +2,7 @@
 
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
+#include "derivations/core/prove_detail.hpp"
 
 namespace dc {
 
@@ -78,6 +79,38 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
       v.method = "remainder / gauge via one-sided limits";
       v.detail = over + " -> " + details + ", so lhs - rhs = " + o;
       return v;
+    }
+  }
+  // Parameters whose signs the declarations leave open (sin(y), a^3): the claim must hold at
+  // every admissible value, so one value at which the quotient is certainly unbounded refutes it.
+  if (!L.ok && !L.does_not_exist) {
+    detail::PointSampler sampler({quotient, point}, ctx);
+    detail::Rng rng(20261125);
+    for (int attempt = 0; attempt < 4 && sampler.symbols().size() > 1; ++attempt) {
+      bool admissible = false;
+      GiNaC::exmap at = sampler.draw(rng, 0, &admissible);
+      at.erase(x);
+      if (!admissible || at.empty()) continue;
+      const ex q = quotient.subs(at, GiNaC::subs_options::no_pattern);
+      const ex pt = at_infinity ? ex(0) : point.subs(at, GiNaC::subs_options::no_pattern);
+      // each side on its own (a two-sided limit of -sin(y)/x^3 does not exist, but either side is infinite)
+      std::vector<int> sides = at_infinity == 0 && dir == 0 ? std::vector<int>{+1, -1} : std::vector<int>{dir};
+      LimitResult P;
+      for (int side : sides) {
+        P = compute_limit(q, x, pt, at_infinity, side, ctx);
+        if (P.ok && P.infinite != 0) break;
+      }
+      if (P.ok && P.infinite != 0) {
+        v.kind = VerdictKind::Refuted;
+        v.method = "remainder / gauge via limit at a parameter point (" + P.method +
+                   (P.confirmed_numerically ? ", confirmed numerically" : "") + ")";
+        v.point = sampler.describe(at);
+        v.lhs_value = over + " -> " + limit_text(P, ctx);
+        v.rhs_value = "bounded";
+        v.detail = "the remainder is not " + o + " at " + detail::join_point(v.point) + ": " + over + " tends to " +
+                   limit_text(P, ctx);
+        return v;
+      }
     }
   }
   v.kind = VerdictKind::Undecided;

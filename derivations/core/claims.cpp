@@ -367,6 +367,8 @@ class ClaimLine {
       // d rhs / d var = lhs
       Verdict v = prove_equal(rhs.diff(x), lhs, table_, opt_);
       v.method = "d/d" + x.get_name() + " of rhs + " + v.method;
+      v.side_conditions = side_conditions_of_sides({&nodes.at("rhs")}, table_);
+      require_antiderivative_defined(v, lhs, x.get_name(), table_);
       return v;
     }
     if (kind == "limit") {
@@ -736,7 +738,12 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
   } catch (const InputError& e) {
     return error(e.message());
   } catch (const std::exception& e) {
-    return error("the claim could not be evaluated (symbolic computation failed)");
+    // The line is well formed (its errors are LineError / InputError above): a library failure
+    // inside the computation leaves the claim undecided, with what failed, not an input error.
+    v = Verdict{};
+    v.kind = VerdictKind::Undecided;
+    v.method = "internal";
+    v.reason = std::string("a symbolic computation failed: ") + e.what();
   }
   nlohmann::ordered_json vj = verdict_json(v);
   for (auto& [k, val] : vj.items()) out[k] = val;

@@ -421,6 +421,55 @@ void require_defined_on_domain(Verdict& v) {
   }
 }
 
+bool names_symbol(const std::string& text, const std::string& name) {
+  auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t p = text.find(name); p != std::string::npos; p = text.find(name, p + 1)) {
+    const bool before = p == 0 || !ident(text[p - 1]);
+    const bool after = p + name.size() >= text.size() || !ident(text[p + name.size()]);
+    if (before && after) return true;
+  }
+  return false;
+}
+
+void require_antiderivative_defined(Verdict& v, const GiNaC::ex& integrand, const std::string& var,
+                                    const SymbolTable& ctx) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status == SideCondition::Status::Guaranteed) continue;
+    if (sc.status == SideCondition::Status::Violated && !sc.point.empty()) {
+      // the claimed antiderivative is undefined at this point of the domain: if the integrand
+      // is defined there, the claim is false at that point
+      GiNaC::exmap at;
+      for (const auto& [name, value] : sc.point)
+        if (const SymbolInfo* info = ctx.find(name)) at[info->sym] = GiNaC::numeric(value.c_str());
+      DigitsGuard g(30);
+      const GiNaC::ex f = integrand.subs(at).evalf();
+      if (GiNaC::is_a<GiNaC::numeric>(f) && GiNaC::ex_to<GiNaC::numeric>(f).is_real()) {
+        v.kind = VerdictKind::Refuted;
+        v.method += " + side condition";
+        v.points = 0;
+        v.point = sc.point;
+        v.lhs_value = detail::format_number(GiNaC::ex_to<GiNaC::numeric>(f));
+        v.rhs_value = "undefined";
+        v.detail = "the claimed antiderivative is not defined at a point of the declared domain where the integrand is: " +
+                   sc.what + " (" + sc.reason + ") " + sc.evidence + "; restrict the declarations or use a form defined there";
+        return;
+      }
+    }
+    if (!names_symbol(sc.what, var)) continue;
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the claimed antiderivative may be undefined or jump inside the domain of " + var + " (" + sc.what +
+               ", " + sc.reason + ", " +
+               (sc.status == SideCondition::Status::Violated
+                    ? (sc.evidence.rfind("fails", 0) == 0 ? sc.evidence : "fails " + sc.evidence)
+                    : "is not guaranteed by the declarations") +
+               "): its derivative matching the integrand proves it only where it is defined and continuous; "
+               "restrict the domain or add an assumption";
+    v.detail = v.reason;
+    return;
+  }
+}
+
 void require_solution_without_singularities(Verdict& v, const std::string& var) {
   if (!v.holds()) return;
   for (const SideCondition& sc : v.side_conditions) {
@@ -429,14 +478,7 @@ void require_solution_without_singularities(Verdict& v, const std::string& var) 
     // which the domains do not reach) is the author's: declared functions are taken to be
     // smooth, as in the continuity test of integrals.
     if (sc.evidence.find("abstract function") != std::string::npos) continue;
-    bool mentions = false;   // the condition names the independent variable (as a whole word)
-    for (std::size_t p = sc.what.find(var); p != std::string::npos && !mentions; p = sc.what.find(var, p + 1)) {
-      auto ident = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-      bool before = p == 0 || !ident(sc.what[p - 1]);
-      bool after = p + var.size() >= sc.what.size() || !ident(sc.what[p + var.size()]);
-      mentions = before && after;
-    }
-    if (!mentions) continue;
+    if (!names_symbol(sc.what, var)) continue;
     v.kind = VerdictKind::Undecided;
     v.reason = "the claimed solution may be singular inside the domain (" + sc.what + ", " + sc.reason + ", " +
                (sc.status == SideCondition::Status::Violated ? "fails " + sc.evidence : "is not guaranteed by the declarations") +

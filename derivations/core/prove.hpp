@@ -66,6 +66,14 @@ void require_defined_on_domain(Verdict& v);
 // G that jumps (atan(1/t) + atan(t)) passes the residual test. Conditions on the values of
 // declared functions are left to the author (declared functions are taken to be smooth).
 void require_solution_without_singularities(Verdict& v, const std::string& var);
+// A claimed antiderivative G of f in `var`, proved by dG/dvar = f: G must be defined (and
+// continuous) on the whole declared domain. A side condition of G violated at a point where f
+// is defined refutes the claim (log(x) for 1/x with x negative); one that is only not
+// guaranteed and involves `var` makes it undecided, as for ODE solutions.
+void require_antiderivative_defined(Verdict& v, const GiNaC::ex& integrand, const std::string& var,
+                                    const SymbolTable& ctx);
+// Does `text` contain `name` as a whole identifier?
+bool names_symbol(const std::string& text, const std::string& name);
 
 // Do the declared domains and constraints admit at least one point? (An empty set of
 // assumptions would let anything follow.) Returns an empty string when satisfiable (a point

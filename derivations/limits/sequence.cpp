@@ -80,6 +80,10 @@ SequenceCheck check_sequence(const ex& f, const ex& x, const ex& point, int at_i
         continue;
       }
       scale = std::max(1.0, std::fabs(lb.to_double()));
+      if (!std::isfinite(scale)) {   // exp(1e9): no double thresholds; the engine's value stands alone
+        last_problem = "the limit's magnitude is beyond double's range, so the sequence is not compared with it";
+        continue;
+      }
     }
     const ex D = finite ? f - L : f;
     std::vector<Sample> samples;
