@@ -6,6 +6,7 @@
 
 #include "derivations/core/printer.hpp"
 #include "derivations/core/prove_detail.hpp"
+#include "derivations/integrals/definite.hpp"
 #include "derivations/kernel/quadrature.hpp"
 
 namespace dc {
@@ -31,9 +32,54 @@ Verdict undecided_because(const std::string& why) {
   return v;
 }
 
-bool is_infinity(const Node& n) {
-  const Node& v = n.kind == NodeKind::Neg ? n.args[0] : n;
-  return v.kind == NodeKind::Symbol && v.text == "oo";
+// +1 for oo, -1 for -oo, 0 otherwise.
+int infinity_sign(const Node& n) {
+  const bool neg = n.kind == NodeKind::Neg;
+  const Node& v = neg ? n.args[0] : n;
+  return v.kind == NodeKind::Symbol && v.text == "oo" ? (neg ? -1 : 1) : 0;
+}
+
+std::string prefixed(const std::string& head, const std::string& method) {
+  return method.empty() ? head : head + " + " + method;
+}
+
+thread_local std::string improper_note_;   // why by_antiderivative gave no verdict
+
+// integral(f, x, a, b) = G through an antiderivative (derivations/integrals/definite.hpp):
+// proved or refuted by comparing its value with G; refuted when it diverges or does not exist.
+std::optional<Verdict> by_antiderivative(const ex& f, const GiNaC::symbol& x, const ex& a, int a_inf, const ex& b,
+                                         int b_inf, const ex& G, const SymbolTable& table, const ProveOptions& opt) {
+  improper_note_.clear();
+  const SymbolInfo* info = table.find(x);
+  if (info && info->domain.kind == Domain::Kind::Positive && (a_inf || !(GiNaC::is_a<GiNaC::numeric>(a) && GiNaC::ex_to<GiNaC::numeric>(a) >= 0))) {
+    improper_note_ = "the variable of integration is declared positive but the range reaches below 0";
+    return std::nullopt;
+  }
+  const integrals::Definite d = integrals::definite_integral(f, x, a, a_inf, b, b_inf, table);
+  using K = integrals::Definite::Kind;
+  if (d.kind == K::Unknown) {
+    improper_note_ = d.why;
+    return std::nullopt;
+  }
+  if (d.kind == K::Value) {
+    Verdict v = prove_equal(d.value, G, table, opt);
+    if (v.kind != VerdictKind::Proved && v.kind != VerdictKind::Refuted && v.kind != VerdictKind::HoldsNumerically) {
+      improper_note_ = "its value " + print_text(d.value, table) + " (" + d.evidence + ") was not decided equal to the claim";
+      return std::nullopt;
+    }
+    v.method = prefixed("integral (" + d.evidence + ", value " + print_text(d.value, table) + ")", v.method);
+    return v;
+  }
+  Verdict v;
+  v.kind = VerdictKind::Refuted;
+  v.method = "integral (" + d.evidence + ")";
+  v.detail = d.kind == K::Diverges
+                 ? std::string("the integral diverges") + (d.infinite > 0 ? " to oo" : d.infinite < 0 ? " to -oo" : "") +
+                       ", so it equals no finite expression"
+                 : "the integral does not exist (a limit of the antiderivative at an end does not exist)";
+  v.lhs_value = d.kind == K::Diverges ? "diverges" : "does not exist";
+  v.rhs_value = print_text(G, table);
+  return v;
 }
 
 }  // namespace
@@ -68,9 +114,6 @@ bool continuous_everywhere(const ex& e, const GiNaC::symbol& x) {
 
 namespace {
 
-std::string prefixed(const std::string& head, const std::string& method) {
-  return method.empty() ? head : head + " + " + method;
-}
 
 // Integrals inside larger expressions: to_ginac evaluates them (a polynomial integrand exactly,
 // d/dx of an integral by Leibniz's rule) or says why it cannot (UndecidedLimit).
@@ -102,18 +145,23 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
   if (!integral) return integrals_in_expressions(lhs, rhs, table, opt);
   if (integral->args.size() != 4)
     throw InputError(integral->pos, "expected integral(f, x, a, b): 4 arguments", integral->length);
-  if (is_infinity(integral->args[2]) || is_infinity(integral->args[3]))
-    return undecided_because("improper integrals (a limit of integration at oo or -oo) are not checked yet");
+  const int a_inf = infinity_sign(integral->args[2]), b_inf = infinity_sign(integral->args[3]);
+  if (a_inf > 0 || b_inf < 0)
+    return undecided_because("an integral from oo or to -oo: write it with the limits the other way round");
   const ex f = to_ginac(integral->args[0], table);
   const ex xe = to_ginac(integral->args[1], table);
   if (!GiNaC::is_a<GiNaC::symbol>(xe))
     throw InputError(integral->args[1].pos, "the variable of integration must be a symbol", integral->args[1].length);
   const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(xe);
-  const ex a = to_ginac(integral->args[2], table);
-  const ex b = to_ginac(integral->args[3], table);
+  const ex a = a_inf ? ex(0) : to_ginac(integral->args[2], table);
+  const ex b = b_inf ? ex(0) : to_ginac(integral->args[3], table);
   if (a.has(x) || b.has(x))
     throw InputError(integral->pos, "a limit of integration contains the variable of integration", integral->length);
   const ex G = to_ginac(*other, table);
+  if (a_inf || b_inf) {
+    if (auto v = by_antiderivative(f, x, a, a_inf, b, b_inf, G, table, opt)) return *v;
+    return undecided_because("improper integral: " + improper_note_);
+  }
 
   // 1. A polynomial integrand: GiNaC integrates it exactly. (Only then: eval_integ also
   // "integrates" 1/x to log across 0, where the integral diverges.)
@@ -157,7 +205,10 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
     symbolic_note = "; d/d" + bs.get_name() + " of the closed form is " + (d.holds() ? "the integrand" : "not proved to be the integrand");
   }
 
-  // 3. Rigorous quadrature at sampled parameter values.
+  // 3. An antiderivative found by rules and proved by differentiation, continuity on (a, b).
+  if (auto v = by_antiderivative(f, x, a, 0, b, 0, G, table, opt)) return *v;
+
+  // 4. Rigorous quadrature at sampled parameter values.
   Verdict v = kernel::probe_definite_integral(f, x, a, b, G, table, opt);
   v.method = prefixed("integral", v.method);
   if (v.kind == VerdictKind::Undecided && !symbolic_note.empty()) v.reason += symbolic_note;

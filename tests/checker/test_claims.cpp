@@ -143,9 +143,11 @@ TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]"
       {R"J({"kind":"equal","lhs":"integral(exp(-x/tau), x, 0, T)","rhs":"tau*(1 - exp(-T/tau))","assumptions":{"tau":"positive","T":"positive"}})J",
        "proved", "d/dT of the closed form"},
       {R"J({"kind":"equal","lhs":"integral(exp(-x/tau), x, 0, T)","rhs":"tau*(1 + exp(-T/tau))","assumptions":{"tau":"positive","T":"positive"}})J",
-       "refuted", "rigorous quadrature"},
-      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/2"})J", "holds_numerically", "rigorous quadrature"},
-      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/3"})J", "refuted", "rigorous quadrature"},
+       "refuted", "antiderivative -tau*exp(-x/tau)"},
+      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/2"})J", "proved", "antiderivative x/2 - sin(2*x)/4"},
+      {R"J({"kind":"equal","lhs":"integral(sin(x)^2, x, 0, pi)","rhs":"pi/3"})J", "refuted", "antiderivative"},
+      // the rules find no antiderivative of sin(x)/x: rigorous quadrature decides
+      {R"J({"kind":"equal","lhs":"integral(sin(x)/x, x, 1, 2)","rhs":"0.6593299064355118"})J", "refuted", "rigorous quadrature"},
       {R"J({"kind":"equal","lhs":"integral(1/x, x, 1, b)","rhs":"log(b)","assumptions":{"b":"positive"}})J", "holds_numerically", ""},
       // 1/x across 0 diverges: never proved (GiNaC's eval_integ would say log(b) - log(-1))
       {R"J({"kind":"equal","lhs":"integral(1/x, x, -1, b)","rhs":"log(b^2)/2","assumptions":{"b":"positive"}})J", "undecided", ""},
@@ -166,12 +168,34 @@ TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]"
       {R"J({"kind":"equal","lhs":"limit(integral(x^2, x, 0, b)/b^3, b, oo)","rhs":"1/3"})J", "proved", ""},
       // nested: the inner integral by its closed form, then the whole-side methods
       {R"J({"kind":"equal","lhs":"integral(integral(x*y, x, 0, 1), y, 0, 2)","rhs":"1"})J", "proved", "polynomial integrand, integrated exactly: 1"},
-      {R"J({"kind":"equal","lhs":"integral(exp(x), x, 0, integral(1, t, 0, 1))","rhs":"exp(1)"})J", "refuted", "rigorous quadrature"},
+      {R"J({"kind":"equal","lhs":"integral(exp(x), x, 0, integral(1, t, 0, 1))","rhs":"exp(1)"})J", "refuted", "antiderivative exp(x)"},
+      // no elementary antiderivative: an improper integral stays undecided
       {R"J({"kind":"equal","lhs":"integral(exp(-x^2), x, 0, oo)","rhs":"sqrt(pi)/2"})J", "undecided", "integral"},
+      // improper integrals: the antiderivative's limits at the ends (derivations/integrals/definite.hpp)
+      {R"J({"kind":"equal","lhs":"integral(exp(-x), x, 0, oo)","rhs":"1"})J", "proved", "F(oo) = 0, F(0+) = -1"},
+      {R"J({"kind":"equal","lhs":"integral(exp(-x), x, 0, oo)","rhs":"2"})J", "refuted", "antiderivative -exp(-x)"},
+      {R"J({"kind":"equal","lhs":"integral(F0*exp(-t/tau), t, 0, oo)","rhs":"F0*tau","assumptions":{"F0":"positive","tau":"positive"}})J",
+       "proved", "antiderivative"},
+      {R"J({"kind":"equal","lhs":"integral(1/(x^2+a^2), x, -oo, oo)","rhs":"pi/a","assumptions":{"a":"positive"}})J", "proved",
+       "F(oo) = pi/(2*a)"},
+      {R"J({"kind":"equal","lhs":"integral(1/sqrt(x), x, 0, 1)","rhs":"2"})J", "proved", "F(0+) = 0"},
+      {R"J({"kind":"equal","lhs":"integral(log(x), x, 0, 1)","rhs":"-1"})J", "proved", "antiderivative x*log(x) - x"},
+      {R"J({"kind":"equal","lhs":"integral(1/x, x, 1, oo)","rhs":"100"})J", "refuted", "F(oo) = oo"},
+      {R"J({"kind":"equal","lhs":"integral(1/x^2, x, 0, 1)","rhs":"1"})J", "refuted", "F(0+) = -oo"},
+      {R"J({"kind":"equal","lhs":"integral(cos(x), x, 0, oo)","rhs":"0"})J", "refuted", "does not exist"},
+      {R"J({"kind":"equal","lhs":"integral(x^2*exp(-x), x, 0, oo)","rhs":"2"})J", "proved", "antiderivative"},
+      {R"J({"kind":"equal","lhs":"integral(1/(x*(x+1)), x, 1, oo)","rhs":"log(2)"})J", "proved", "antiderivative"},
+      // limits given the other way round
+      {R"J({"kind":"equal","lhs":"integral(exp(x), x, 1, 0)","rhs":"1 - exp(1)"})J", "proved", "limits reversed"},
+      // 1/x on (-1, 1) is not continuous: never a value (it diverges)
+      {R"J({"kind":"equal","lhs":"integral(1/x, x, -1, 1)","rhs":"0"})J", "undecided", ""},
+      // the order of 0 and T is not known for T real: no antiderivative verdict
+      {R"J({"kind":"equal","lhs":"integral(1/(1+x), x, 0, T)","rhs":"log(1+T)","assumptions":{"T":"real"}})J", "", ""},
   }));
   auto r = dc::check_claim_line(x.line, 1, "b.jsonl");
   CAPTURE(x.line, r.dump());
-  CHECK(r.at("verdict") == x.verdict);
+  if (*x.verdict) CHECK(r.at("verdict") == x.verdict);
+  else CHECK(r.at("verdict") != "proved");
   CHECK(r.value("method", "").find(x.method) != std::string::npos);
 }
 
