@@ -755,7 +755,13 @@ class Reader {
   // integral(...) cannot be converted to GiNaC; validate its parts instead.
   void validate_side(const Node& n) {
     if (n.kind == NodeKind::Call && n.text == "integral") {
-      for (const auto& a : n.args) validate_side(a);
+      for (std::size_t i = 0; i < n.args.size(); ++i) {
+        // a limit of integration may be oo or -oo
+        const Node& a = n.args[i];
+        const Node& v = a.kind == NodeKind::Neg ? a.args[0] : a;
+        if (i >= 2 && v.kind == NodeKind::Symbol && v.text == "oo") continue;
+        validate_side(a);
+      }
       return;
     }
     if (contains_integral(n)) {
@@ -1051,10 +1057,16 @@ class Reader {
       if (pre_items.empty() && r == "solves_ode")
         fail(s.at(nonspace(s, pre.b)), "expected the label of the equation" + usage(r));
       for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
-      const Group& g = require("wrt");
-      auto wit = items(s, g);
-      if (wit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one variable after 'wrt'" + usage(r));
-      spec.var = symbol_arg(s, wit[0].first, wit[0].second);
+      // without a cited equation, differentiate and integrate read the variable from the claim's
+      // own diff(f, x) / integral(f, x, a, b), so 'wrt' may be left out
+      const Group* g = group("wrt");
+      if (!g && (pre_items.empty() && r != "solves_ode")) {
+      } else {
+        if (!g) g = &require("wrt");
+        auto wit = items(s, *g);
+        if (wit.size() != 1) fail(s.at(nonspace(s, g->b)), "expected one variable after 'wrt'" + usage(r));
+        spec.var = symbol_arg(s, wit[0].first, wit[0].second);
+      }
       if (r == "integrate") {
         // `from T0` is needed by the ODE form only (an integral(f, x, a, b) claim has its limits).
         if (const Group* f = group("from")) {

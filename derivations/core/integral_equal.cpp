@@ -127,7 +127,7 @@ std::optional<Verdict> integrals_in_expressions(const Node& lhs, const Node& rhs
     return undecided_because(e.what());
   }
   Verdict v = prove_equal(l, r, table, opt);
-  v.method = prefixed("integral (evaluated in the expression: polynomial integrands exactly, d/dx by Leibniz's rule)",
+  v.method = prefixed("integral (evaluated in the expression: polynomial integrands exactly, others by a proved antiderivative, d/dx by Leibniz's rule)",
                       v.method);
   return v;
 }

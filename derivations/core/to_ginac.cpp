@@ -27,6 +27,7 @@
 #include "derivations/core/literal.hpp"
 #include "derivations/core/source.hpp"
 #include "derivations/core/integral_equal.hpp"
+#include "derivations/integrals/definite.hpp"
 #include "derivations/core/symbols.hpp"
 #include "derivations/core/units.hpp"
 
@@ -178,7 +179,7 @@ class Converter {
       case NodeKind::Symbol:
         if (n.text == "pi") return GiNaC::Pi;
         if (n.text == "oo")
-          throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo)", n.length);
+          throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo) or as a limit of integration", n.length);
         return lookup_symbol(n, table_).sym;
       case NodeKind::Add:
       case NodeKind::Sub:
@@ -204,47 +205,56 @@ class Converter {
   // The parts of integral(f, t, a, b): f, t (a symbol, held by ex), a, b.
   struct IntegralParts {
     GiNaC::ex f, t, a, b;
+    int a_inf = 0, b_inf = 0;   // -1 / +1: that limit of integration is -oo / oo (a, b are 0 then)
   };
   IntegralParts integral_parts(const Node& n) {
     check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
     const SymbolInfo& x = variable_arg(n, n.args[1], table_);
-    if (infinity_sign(n.args[2]) != 0 || infinity_sign(n.args[3]) != 0)
-      throw UndecidedLimit("improper integrals (a limit of integration at oo or -oo) are not evaluated yet ('" +
-                               short_text(n) + "')",
+    const int a_inf = infinity_sign(n.args[2]), b_inf = infinity_sign(n.args[3]);
+    if (a_inf > 0 || b_inf < 0)
+      throw UndecidedLimit("'" + short_text(n) + "': an integral from oo or to -oo; write it with the limits the other way round",
                            n.pos);
-    IntegralParts p{conv(n.args[0]), x.sym, conv(n.args[2]), conv(n.args[3])};
+    IntegralParts p{conv(n.args[0]), x.sym, a_inf ? GiNaC::ex(0) : conv(n.args[2]), b_inf ? GiNaC::ex(0) : conv(n.args[3]),
+                    a_inf, b_inf};
     if (p.a.has(p.t) || p.b.has(p.t))
       throw InputError(n.pos, "a limit of integration contains the variable of integration", n.length);
     return p;
   }
 
-  // A definite integral inside an expression has a value here only when its integrand is a
-  // polynomial in the variable (GiNaC integrates it exactly; eval_integ would also "integrate"
-  // 1/x across 0, so nothing else). Otherwise the step is undecided, saying so; as a whole side
-  // `integral(f, x, a, b) = G` the integrate rule and `equal` check it by other means.
+  // A definite integral inside an expression: a polynomial integrand on a finite interval exactly
+  // (GiNaC; eval_integ would also "integrate" 1/x across 0, so nothing else goes there), any
+  // other by an antiderivative proved by differentiation and continuous on (a, b), with the limits
+  // at the ends (derivations/integrals/definite.hpp). Otherwise, or when the integral diverges,
+  // the claim is undecided with the reason.
   GiNaC::ex integral_value(const Node& n, const IntegralParts& p) {
-    if (!p.f.is_polynomial(p.t))
-      throw UndecidedLimit("'" + short_text(n) + "' inside an expression is evaluated only for a polynomial "
-                               "integrand; as a whole side, integral(f, x, a, b) = G, it is checked by 'integrate' "
-                               "(in a .dc step) or by 'equal' and claims",
+    if (p.f.is_polynomial(p.t) && !p.a_inf && !p.b_inf) {
+      GiNaC::ex v = guarded(n, [&] { return GiNaC::integral(p.t, p.a, p.b, p.f).eval_integ(); });
+      bool residual = false;
+      for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+        residual = residual || GiNaC::is_a<GiNaC::integral>(*it);
+      if (!residual) return v;
+    }
+    const integrals::Definite d =
+        integrals::definite_integral(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, table_);
+    using K = integrals::Definite::Kind;
+    if (d.kind == K::Value) return d.value;
+    if (d.kind == K::Diverges)
+      throw UndecidedLimit("'" + short_text(n) + "' diverges" +
+                               (d.infinite > 0 ? " to oo" : d.infinite < 0 ? " to -oo" : "") + " (" + d.evidence + ")",
                            n.pos);
-    GiNaC::ex v = guarded(n, [&] { return GiNaC::integral(p.t, p.a, p.b, p.f).eval_integ(); });
-    for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
-      if (GiNaC::is_a<GiNaC::integral>(*it))
-        throw UndecidedLimit("GiNaC left '" + short_text(n) + "' unevaluated", n.pos);
-    return v;
+    if (d.kind == K::DoesNotExist)
+      throw UndecidedLimit("'" + short_text(n) + "' does not exist (" + d.evidence + ")", n.pos);
+    throw UndecidedLimit("'" + short_text(n) + "' inside an expression was not evaluated: " + d.why, n.pos);
   }
 
   // d/dx of integral(f, t, a, b) = f(b) db/dx - f(a) da/dx (Leibniz's rule) when f does not
   // contain x and is continuous in t on the whole line; nullopt otherwise (then the integral
   // must have a value of its own, and that is differentiated).
   std::optional<GiNaC::ex> leibniz(const Node& in, const IntegralParts& p, const GiNaC::symbol& x) {
-    if (p.f.has(x) || p.t.is_equal(x) || !continuous_everywhere(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t))) {
-      if (p.f.is_polynomial(p.t)) return std::nullopt;
-      throw UndecidedLimit("d/d" + x.get_name() + " of '" + short_text(in) + "': Leibniz's rule is applied only to "
-                               "an integrand free of " + x.get_name() + " and continuous on the whole line",
-                           in.pos);
-    }
+    // otherwise the integral's own value (if it has one) is differentiated
+    if (p.a_inf || p.b_inf || p.f.has(x) || p.t.is_equal(x) ||
+        !continuous_everywhere(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t)))
+      return std::nullopt;
     return guarded(in, [&] {
       return p.f.subs(p.t == p.b) * p.b.diff(x) - p.f.subs(p.t == p.a) * p.a.diff(x);
     });
@@ -477,7 +487,7 @@ class Dimensioner {
       case NodeKind::Symbol: {
         if (n.text == "pi") return {};
         if (n.text == "oo")
-          throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo)", n.length);
+          throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo) or as a limit of integration", n.length);
         const SymbolInfo& info = lookup_symbol(n, table_);
         return info.has_dimension ? info.dimension : Dimension();
       }

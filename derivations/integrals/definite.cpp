@@ -133,7 +133,18 @@ SymbolTable restricted(const SymbolTable& ctx, const symbol& x, const End& lo, c
     t.narrow_domain(name, Domain::interval(lo.at, true, hi.at, true));
     return t;
   }
-  t.narrow_domain(name, Domain::real());
+  // a half-line (lo, oo) with lo >= 0 lies in the positive numbers, (-oo, hi) with hi <= 0 in the
+  // negative ones: the domain says so (sums of positive terms are then seen to be positive)
+  auto numeric_sign = [](const End& e) -> std::optional<int> {
+    const ex v = e.at.evalf();
+    if (e.inf || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+    const numeric n = ex_to<numeric>(v);
+    return n.is_zero() ? 0 : n > 0 ? 1 : -1;
+  };
+  const auto lo_sign = numeric_sign(lo), hi_sign = numeric_sign(hi);
+  if (hi.inf && lo_sign && *lo_sign >= 0) t.narrow_domain(name, Domain::positive());
+  else if (lo.inf && hi_sign && *hi_sign <= 0) t.narrow_domain(name, Domain::negative());
+  else t.narrow_domain(name, Domain::real());
   if (lo.inf == 0) t.add_constraint({x, lo.at, Constraint::Op::Gt, name + " > lower limit", {}});
   if (hi.inf == 0) t.add_constraint({x, hi.at, Constraint::Op::Lt, name + " < upper limit", {}});
   return t;
@@ -225,7 +236,23 @@ Definite definite_integral(const ex& f, const symbol& x, const ex& a, int a_inf,
     }
     const auto order = sign_known(b - a, ctx);
     if (!order) {
-      out.why = "the order of the limits of integration is not determined by the declarations";
+      // either order: fine when f and F are continuous on the whole line (F(b) - F(a) then)
+      std::string why;
+      const std::optional<ex> F = antiderivative(f, x, ctx, &why);
+      std::vector<Condition> conds;
+      const SymbolTable line = restricted(ctx, x, End{0, -1}, End{0, +1});
+      bool continuous = F && collect(f, x, conds) && collect(*F, x, conds);
+      for (std::size_t i = 0; continuous && i < conds.size(); ++i)
+        continuous = guaranteed(conds[i], x, End{0, -1}, End{0, +1}, line).has_value();
+      if (!continuous) {
+        out.why = "the order of the limits of integration is not determined by the declarations, and the integrand or "
+                  "its antiderivative is not shown continuous on the whole line";
+        return out;
+      }
+      out.kind = Definite::Kind::Value;
+      out.value = F->subs(x == b) - F->subs(x == a);
+      out.evidence = "antiderivative " + print_text(*F, ctx) + " (d/d" + x.get_name() +
+                     " proved), continuous on the whole line";
       return out;
     }
     if (!*order) {   // integral from a to b = - integral from b to a

@@ -170,7 +170,9 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   // A claim must hold on the whole declared domain (premises only warn).
   if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
   // An ODE solution proved by residual and initial values holds only up to a singularity.
-  const bool integral_claim = !claim.sides.empty() && claim.sides[0].kind == NodeKind::Call && claim.sides[0].text == "integral";
+  const std::size_t first = s.names_result ? 1 : 0;   // `W = integral(...) = G` names the result
+  const bool integral_claim = claim.sides.size() > first && claim.sides[first].kind == NodeKind::Call &&
+                              claim.sides[first].text == "integral";
   if ((s.rule.name == "solves_ode" || (s.rule.name == "integrate" && !integral_claim)) && s.rule.var)
     require_solution_without_singularities(res.verdict, s.rule.var->label);
   if (s.stable_of) check_stable_form(d, s, opt, res);

@@ -142,12 +142,38 @@ Verdict ode_form(StepContext& c, const Relation& claim, const ex& t, const ex& T
 
 }  // namespace
 
+// Without cited equations: each closed form against the integral by the whole cascade of
+// integral_equal.hpp (exact, antiderivative test, an antiderivative found by rules with its
+// limits -- improper integrals too --, rigorous quadrature).
+Verdict integral_claim(StepContext& c, const Relation& claim, std::size_t at) {
+  Combiner all;
+  const Node integral = resolve_definitions(c.d, claim.sides[at]);
+  for (std::size_t i = at + 1; i < claim.sides.size(); ++i) {
+    std::optional<Verdict> v = integral_equality(integral, resolve_definitions(c.d, claim.sides[i]), c.d.symbols, c.opt);
+    all.add(v ? *v : undecided("integral", "no integral to compare"),
+            claim.sides.size() > at + 2 ? "side " + std::to_string(i + 1) : "");
+  }
+  return all.result();
+}
+
 Verdict integrate(StepContext& c, const Relation& claim) {
   const RuleSpec& rule = c.rule();
+  // `W = integral(...) = G`: W names the result (Step::names_result); the integral is side 1
+  const std::size_t at = c.s.names_result ? 1 : 0;
+  Node side0 = resolve_definitions(c.d, claim.sides[at]);
+  const bool is_integral = side0.kind == NodeKind::Call && side0.text == "integral";
+  if (is_integral && rule.refs.empty()) {
+    if (claim.sides.size() < at + 2) c.fail(c.s.claim_pos, "expected 'integral(f, x, a, b) = G'");
+    if (rule.var && side0.args.size() == 4 && !c.symbol_of(*rule.var).is_equal(to_ginac(side0.args[1], c.d.symbols)))
+      c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
+    return integral_claim(c, claim, at);
+  }
+  if (!rule.var)
+    c.fail(rule.pos, "'by integrate' with cited equations needs the variable: 'by integrate A wrt t ...'",
+           static_cast<int>(rule.text.size()));
   ex t = c.symbol_of(*rule.var);
   std::vector<Eq> ref_eqs = c.all_equations(rule.refs);
-  Node side0 = resolve_definitions(c.d, claim.sides[0]);
-  if (side0.kind == NodeKind::Call && side0.text == "integral") return definite_integral(c, claim, side0, t, ref_eqs);
+  if (is_integral) return definite_integral(c, claim, side0, t, ref_eqs);
   if (rule.refs.empty())
     c.fail(rule.pos, "without a cited ODE the claim of 'by integrate' must be 'integral(f, x, a, b) = G'; to solve an ODE "
                      "write 'by integrate A wrt t from T0' with A the ODE 'diff(y(t), t) = f'",
