@@ -1,46 +1,41 @@
-// The JIT's host side (numeric/jit.hpp): choosing the instruction set, the SLEEF functions for
-// it, the switch in the environment, and the padded tail. Code generation: jit_llvm.cpp.
+// The JIT's host side (numeric/jit.hpp): choosing the instruction set, the switch in the
+// environment, loading the JIT module (numeric/jit_internal.hpp) and the padded tail. Code
+// generation lives in the module: numeric/jit_module/jit_llvm.cpp.
 #include "numeric/jit.hpp"
 
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <vector>
+
+#if DERIVCHECK_HAVE_JIT
+#include <dlfcn.h>
+#include <unistd.h>
+#endif
 
 #include "numeric/jit_internal.hpp"
 
-#if DERIVCHECK_HAVE_JIT
-// SLEEF 3.5.1 (libsleef3), one symbol per function and instruction set; the names are checked
-// against `nm -D libsleef.so`. u10: max error 1.0 ulp; u05: 0.5001 ulp (SLEEF's documentation;
-// the tests in tests/numeric/test_jit.cpp measure them against CLN on wide ranges).
-#define DC_SLEEF_FNS(X, V, ISA)                                                                 \
-  X(exp, V, u10, ISA) X(expm1, V, u10, ISA) X(log, V, u10, ISA) X(log1p, V, u10, ISA)           \
-  X(sin, V, u10, ISA) X(cos, V, u10, ISA) X(tan, V, u10, ISA) X(asin, V, u10, ISA)              \
-  X(acos, V, u10, ISA) X(atan, V, u10, ISA) X(pow, V, u10, ISA) X(hypot, V, u05, ISA)
-#define DC_SLEEF_DECL(f, V, U, ISA) extern "C" void Sleef_##f##V##_##U##ISA();
-DC_SLEEF_FNS(DC_SLEEF_DECL, d8, avx512f)
-DC_SLEEF_FNS(DC_SLEEF_DECL, d4, avx2)
-DC_SLEEF_FNS(DC_SLEEF_DECL, d4, avx)
-DC_SLEEF_FNS(DC_SLEEF_DECL, d2, sse2)
-#define DC_SLEEF_ENTRY(f, V, U, ISA) \
-  {#f, "Sleef_" #f #V "_" #U #ISA, reinterpret_cast<void*>(&Sleef_##f##V##_##U##ISA)},
-#endif
-
 namespace dc::num {
 
-#if DERIVCHECK_HAVE_JIT
+struct JitKernel::Session {
+  void* handle = nullptr;
+  DerivcheckJitFreeFn free = nullptr;
+  ~Session() {
+    if (handle && free) free(handle);
+  }
+};
 
-namespace jitdetail {
+JitKernel::~JitKernel() = default;
+
+#if DERIVCHECK_HAVE_JIT
 namespace {
-const std::vector<IsaSpec>& isa_table() {
-  static const std::vector<IsaSpec> t = {
-      {"avx512f", 8, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d8, avx512f)}}},
-      {"avx2", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx2)}}},
-      {"avx", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx)}}},
-      {"sse2", 2, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d2, sse2)}}},
-  };
-  return t;
-}
+
+struct IsaName {
+  const char* name;
+  int width;
+};
+constexpr IsaName kIsas[] = {{"avx512f", 8}, {"avx2", 4}, {"avx", 4}, {"sse2", 2}};
 
 bool host_has(const std::string& isa) {
   __builtin_cpu_init();
@@ -49,13 +44,13 @@ bool host_has(const std::string& isa) {
   if (isa == "avx") return __builtin_cpu_supports("avx");
   return isa == "sse2";  // x86-64 baseline
 }
-}  // namespace
 
-const IsaSpec* pick_isa(const std::string& wanted, std::string* why) {
+// The widest set the host has, or `wanted` (or DERIVCHECK_JIT_ISA) if the host has it.
+const IsaName* pick_isa(const std::string& wanted, std::string* why) {
   std::string w = wanted;
   if (w.empty())
     if (const char* e = std::getenv("DERIVCHECK_JIT_ISA")) w = e;
-  for (const IsaSpec& s : isa_table()) {
+  for (const IsaName& s : kIsas) {
     if (!w.empty() && s.name != w) continue;
     if (host_has(s.name)) return &s;
     if (!w.empty()) {
@@ -66,10 +61,49 @@ const IsaSpec* pick_isa(const std::string& wanted, std::string* why) {
   if (why) *why = w.empty() ? "no instruction set" : "unknown instruction set '" + w + "'";
   return nullptr;
 }
-}  // namespace jitdetail
-#else
-struct JitKernel::Session {};
-JitKernel::~JitKernel() = default;
+
+// libderivcheck_jit.so, loaded once: $DERIVCHECK_JIT_MODULE, else next to an installed
+// executable (PREFIX/bin/x -> PREFIX/LIBDIR/), else the build tree's, else the install prefix's.
+struct Module {
+  DerivcheckJitBuildFn build = nullptr;
+  DerivcheckJitFreeFn free = nullptr;
+  std::string why;
+};
+
+const Module& module() {
+  static const Module m = [] {
+    Module r;
+    std::vector<std::string> paths;
+    if (const char* e = std::getenv("DERIVCHECK_JIT_MODULE")) paths.push_back(e);
+    char exe[4096];
+    const ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len > 0) {
+      std::string dir(exe, static_cast<std::size_t>(len));
+      dir = dir.substr(0, dir.find_last_of('/'));
+      paths.push_back(dir + "/../" DERIVCHECK_JIT_MODULE_LIBDIR "/" DERIVCHECK_JIT_MODULE_NAME);
+    }
+    paths.push_back(DERIVCHECK_JIT_MODULE_BUILD);
+    paths.push_back(DERIVCHECK_JIT_MODULE_INSTALL);
+    for (const auto& p : paths) {
+      // never unloaded: LLVM keeps global state that must outlive every kernel
+      void* h = dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
+      if (!h) {
+        if (r.why.empty()) r.why = dlerror();
+        continue;
+      }
+      r.build = reinterpret_cast<DerivcheckJitBuildFn>(dlsym(h, DERIVCHECK_JIT_BUILD_SYMBOL));
+      r.free = reinterpret_cast<DerivcheckJitFreeFn>(dlsym(h, DERIVCHECK_JIT_FREE_SYMBOL));
+      if (r.build && r.free) return r;
+      r.why = p + " lacks " DERIVCHECK_JIT_BUILD_SYMBOL;
+    }
+    r.build = nullptr;
+    r.why = "cannot load the JIT module " DERIVCHECK_JIT_MODULE_NAME ": " + r.why;
+    return r;
+  }();
+  return m;
+}
+
+}  // namespace
 #endif
 
 bool jit_enabled() {
@@ -85,24 +119,43 @@ bool jit_enabled() {
 
 std::string jit_host_isa() {
 #if DERIVCHECK_HAVE_JIT
-  const jitdetail::IsaSpec* s = jitdetail::pick_isa("", nullptr);
+  const IsaName* s = pick_isa("", nullptr);
   return s ? s->name : "";
 #else
   return "";
 #endif
 }
 
-std::shared_ptr<const JitKernel> JitKernel::compile(const Program& p, std::string* why,
-                                                    const std::string& isa) {
+std::shared_ptr<const JitKernel> JitKernel::compile(const Program& p, std::string* why, const std::string& isa) {
 #if DERIVCHECK_HAVE_JIT
   if (!jit_enabled()) {
     if (why) *why = "switched off by DERIVCHECK_JIT";
     return nullptr;
   }
-  const jitdetail::IsaSpec* s = jitdetail::pick_isa(isa, why);
+  const IsaName* s = pick_isa(isa, why);
   if (!s) return nullptr;
-  return JitBuilder::build(p, *s, why);
+  const Module& m = module();
+  if (!m.build) {
+    if (why) *why = m.why;
+    return nullptr;
+  }
+  DerivcheckJitResult res;
+  if (m.build(&p, s->name, s->width, &res) != 0) {
+    if (why) *why = std::string("JIT: ") + res.why;
+    return nullptr;
+  }
+  std::shared_ptr<JitKernel> k(new JitKernel());
+  k->session_ = std::make_unique<Session>();
+  k->session_->handle = res.session;
+  k->session_->free = m.free;
+  k->fn_ = reinterpret_cast<Fn>(res.fn);
+  k->width_ = s->width;
+  k->isa_ = s->name;
+  k->n_inputs_ = p.n_inputs();
+  k->compile_ms_ = res.compile_ms;
+  return k;
 #else
+  (void)p, (void)isa;
   if (why) *why = "derivcheck was built without the JIT (DERIVCHECK_JIT=OFF)";
   return nullptr;
 #endif

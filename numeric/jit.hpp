@@ -10,8 +10,13 @@
 //     1.0-ulp family (u10), hypot the 0.5-ulp one (u05) -- see kSleefUlps in jit.cpp;
 //   - a tail of n mod W points is evaluated on a padded copy.
 //
+// LLVM and SLEEF live in a separate module, libderivcheck_jit.so (numeric/jit_module/), that
+// the first JitKernel::compile loads with dlopen: programs that never compile a kernel do not
+// pay for mapping libLLVM at start-up (nor in every fork).
+//
 // When derivcheck was built without LLVM/SLEEF (CMake option DERIVCHECK_JIT), on a non-x86-64
-// CPU, when the environment variable DERIVCHECK_JIT is "0"/"off", or when compilation fails,
+// CPU, when the environment variable DERIVCHECK_JIT is "0"/"off", when the module cannot be
+// loaded ($DERIVCHECK_JIT_MODULE names it explicitly), or when compilation fails,
 // JitKernel::compile returns nullptr (with the reason) and callers use the tape interpreter.
 #pragma once
 #include <cstddef>
@@ -43,7 +48,7 @@ class JitKernel {
   JitKernel(const JitKernel&) = delete;
   JitKernel& operator=(const JitKernel&) = delete;
 
-  struct Session;  // the LLJIT instance owning the code (jit_llvm.cpp)
+  struct Session;  // the module's LLJIT instance owning the code (jit.cpp)
 
  private:
   JitKernel() = default;
@@ -54,7 +59,6 @@ class JitKernel {
   double compile_ms_ = 0;
   std::size_t n_inputs_ = 0;
   std::unique_ptr<Session> session_;
-  friend struct JitBuilder;
 };
 
 // True when this build has the JIT and the environment does not switch it off.

@@ -1,37 +1,28 @@
-// Shared by numeric/jit.cpp and numeric/jit_llvm.cpp; not a public header.
+// The boundary between numeric/jit.cpp (in derivcheck_numeric) and the JIT module
+// libderivcheck_jit.so (numeric/jit_module/, linked with LLVM and SLEEF), which jit.cpp loads
+// with dlopen on the first compilation: a process that never evaluates a batch never maps
+// libLLVM (about 6 ms of dynamic loading and 50 MB of mappings, also paid again by every fork).
+// Not a public header.
 #pragma once
-#include <array>
-#include <memory>
-#include <string>
+#include <cstddef>
 
 #include "numeric/evaluator.hpp"
-#include "numeric/jit.hpp"
 
-namespace dc::num {
-namespace jitdetail {
+extern "C" {
 
-struct SleefFn {
-  const char* op;      // "exp", ... (op_name of the Op)
-  const char* symbol;  // "Sleef_expd8_u10avx512f"
-  void* address;
+struct DerivcheckJitResult {
+  void* fn = nullptr;       // void(const double* const*, double*, size_t), n a multiple of W
+  void* session = nullptr;  // owns the code; released by derivcheck_jit_free
+  double compile_ms = 0;
+  char why[512] = {};       // the reason when it fails
 };
 
-// One instruction set: its vector width and the SLEEF function for each transcendental Op.
-struct IsaSpec {
-  std::string name;
-  int width;
-  std::array<SleefFn, 12> fns;  // exp expm1 log log1p sin cos tan asin acos atan pow hypot
-};
+// Compiles `p` for instruction set `isa` ("avx512f", "avx2", "avx", "sse2"; the caller has
+// checked that the host has it). Returns 0 on success.
+typedef int (*DerivcheckJitBuildFn)(const dc::num::Program* p, const char* isa, int width, DerivcheckJitResult* out);
+typedef void (*DerivcheckJitFreeFn)(void* session);
 
-// The widest instruction set the host has, or `wanted` if the host has it (nullptr and a
-// reason otherwise).
-const IsaSpec* pick_isa(const std::string& wanted, std::string* why);
+}  // extern "C"
 
-}  // namespace jitdetail
-
-struct JitBuilder {
-  static std::shared_ptr<const JitKernel> build(const Program& p, const jitdetail::IsaSpec& isa,
-                                                std::string* why);
-};
-
-}  // namespace dc::num
+#define DERIVCHECK_JIT_BUILD_SYMBOL "derivcheck_jit_build"
+#define DERIVCHECK_JIT_FREE_SYMBOL "derivcheck_jit_free"

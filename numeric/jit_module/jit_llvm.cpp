@@ -1,10 +1,13 @@
-// The JIT's code generation (numeric/jit.hpp): a Program as LLVM IR on <W x double>, compiled
-// by LLVM 14 ORC (LLJIT) for the host CPU. One LLJIT per kernel: the kernel owns its code and
-// frees it with itself, and kernels compiled on different threads share nothing.
-#if DERIVCHECK_HAVE_JIT
+// The JIT module libderivcheck_jit.so (numeric/jit.hpp, numeric/jit_internal.hpp): a Program
+// as LLVM IR on <W x double>, compiled by LLVM 14 ORC (LLJIT) for the host CPU, transcendental
+// functions as calls to SLEEF. One LLJIT per kernel: the kernel owns its code and frees it with
+// itself, and kernels compiled on different threads share nothing.
+#include <array>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <mutex>
+#include <string>
 
 #include <llvm/ExecutionEngine/Orc/Core.h>
 #include <llvm/ExecutionEngine/Orc/JITTargetMachineBuilder.h>
@@ -20,15 +23,54 @@
 
 #include "numeric/jit_internal.hpp"
 
-namespace dc::num {
+// SLEEF 3.5.1 (libsleef3), one symbol per function and instruction set; the names are checked
+// against `nm -D libsleef.so`. u10: max error 1.0 ulp; u05: 0.5001 ulp (SLEEF's documentation;
+// tests/numeric/test_jit.cpp measures them against CLN on wide ranges). Declared here rather
+// than through sleef.h, which declares each set only when compiling for it.
+#define DC_SLEEF_FNS(X, V, ISA)                                                                 \
+  X(exp, V, u10, ISA) X(expm1, V, u10, ISA) X(log, V, u10, ISA) X(log1p, V, u10, ISA)           \
+  X(sin, V, u10, ISA) X(cos, V, u10, ISA) X(tan, V, u10, ISA) X(asin, V, u10, ISA)              \
+  X(acos, V, u10, ISA) X(atan, V, u10, ISA) X(pow, V, u10, ISA) X(hypot, V, u05, ISA)
+#define DC_SLEEF_DECL(f, V, U, ISA) extern "C" void Sleef_##f##V##_##U##ISA();
+DC_SLEEF_FNS(DC_SLEEF_DECL, d8, avx512f)
+DC_SLEEF_FNS(DC_SLEEF_DECL, d4, avx2)
+DC_SLEEF_FNS(DC_SLEEF_DECL, d4, avx)
+DC_SLEEF_FNS(DC_SLEEF_DECL, d2, sse2)
+#define DC_SLEEF_ENTRY(f, V, U, ISA) \
+  {"Sleef_" #f #V "_" #U #ISA, reinterpret_cast<void*>(&Sleef_##f##V##_##U##ISA)},
 
-struct JitKernel::Session {
+namespace dc::num {
+namespace {
+
+struct SleefFn {
+  const char* symbol;  // "Sleef_expd8_u10avx512f"
+  void* address;
+};
+
+// One instruction set: its vector width and the SLEEF function for each transcendental Op.
+struct IsaSpec {
+  const char* name;
+  int width;
+  std::array<SleefFn, 12> fns;  // exp expm1 log log1p sin cos tan asin acos atan pow hypot
+};
+
+const IsaSpec kIsas[] = {
+    {"avx512f", 8, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d8, avx512f)}}},
+    {"avx2", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx2)}}},
+    {"avx", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx)}}},
+    {"sse2", 2, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d2, sse2)}}},
+};
+
+struct Session {
   std::unique_ptr<llvm::orc::LLJIT> jit;
 };
 
-JitKernel::~JitKernel() = default;
-
-namespace {
+int arity(Op op) {
+  switch (op) {
+    case Op::Add: case Op::Sub: case Op::Mul: case Op::Div: case Op::Pow: case Op::Hypot: return 2;
+    default: return 1;
+  }
+}
 
 std::string message(llvm::Error e) {
   std::string s;
@@ -58,7 +100,7 @@ int sleef_index(Op op) {
 
 // void dc_kernel(const double* const* columns, double* out, i64 n), n a multiple of W:
 //   for (i = 0; i < n; i += W) out[i..i+W) = program(columns[0][i..i+W), ...)
-std::unique_ptr<llvm::Module> emit(const Program& p, const jitdetail::IsaSpec& isa,
+std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
                                    llvm::LLVMContext& ctx) {
   using namespace llvm;
   auto mod = std::make_unique<Module>("derivcheck_jit", ctx);
@@ -113,7 +155,7 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const jitdetail::IsaSpec& i
   };
   for (const Instr& in : p.code) {
     Value* a = reg[in.a];
-    Value* c = op_arity(in.op) == 2 ? reg[in.b] : nullptr;
+    Value* c = arity(in.op) == 2 ? reg[in.b] : nullptr;
     Value* r = nullptr;
     switch (in.op) {
       case Op::Add: r = b.CreateFAdd(a, c); break;
@@ -125,7 +167,7 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const jitdetail::IsaSpec& i
       case Op::Abs: r = b.CreateUnaryIntrinsic(Intrinsic::fabs, a); break;
       default: {
         const int k = sleef_index(in.op);
-        r = op_arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
+        r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
         if (in.op == Op::Log1p) {
           // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and
           // log(x) is log1p(x) to within 1e-300 relative. Lanes above 1e300 (rare: a branch
@@ -160,32 +202,26 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const jitdetail::IsaSpec& i
   return mod;
 }
 
-}  // namespace
-
-std::shared_ptr<const JitKernel> JitBuilder::build(const Program& p, const jitdetail::IsaSpec& isa,
-                                                   std::string* why) {
+// Compiles `p`; the code and its LLJIT in a new Session.
+std::string build(const Program& p, const IsaSpec& isa, DerivcheckJitResult* out) {
   const auto t0 = std::chrono::steady_clock::now();
   static std::once_flag init;
   std::call_once(init, [] {
     llvm::InitializeNativeTarget();
     llvm::InitializeNativeTargetAsmPrinter();
   });
-  auto fail = [&](const std::string& what) -> std::shared_ptr<const JitKernel> {
-    if (why) *why = "JIT: " + what;
-    return nullptr;
-  };
   auto jtmb = llvm::orc::JITTargetMachineBuilder::detectHost();  // host CPU and its features
-  if (!jtmb) return fail(message(jtmb.takeError()));
+  if (!jtmb) return message(jtmb.takeError());
   jtmb->setCodeGenOptLevel(llvm::CodeGenOpt::Aggressive);
   auto jit = llvm::orc::LLJITBuilder().setJITTargetMachineBuilder(std::move(*jtmb)).create();
-  if (!jit) return fail(message(jit.takeError()));
-  // The SLEEF functions by address (linked into this process), nothing else from outside.
+  if (!jit) return message(jit.takeError());
+  // The SLEEF functions by address (linked into this module), nothing else from outside.
   llvm::orc::SymbolMap syms;
   for (const auto& s : isa.fns)
     syms[(*jit)->mangleAndIntern(s.symbol)] = llvm::JITEvaluatedSymbol(
         llvm::pointerToJITTargetAddress(s.address), llvm::JITSymbolFlags::Exported | llvm::JITSymbolFlags::Callable);
   if (auto e = (*jit)->getMainJITDylib().define(llvm::orc::absoluteSymbols(std::move(syms))))
-    return fail(message(std::move(e)));
+    return message(std::move(e));
 
   auto ctx = std::make_unique<llvm::LLVMContext>();
   std::unique_ptr<llvm::Module> mod = emit(p, isa, *ctx);
@@ -193,22 +229,38 @@ std::shared_ptr<const JitKernel> JitBuilder::build(const Program& p, const jitde
   mod->setTargetTriple((*jit)->getTargetTriple().str());
   std::string verr;
   llvm::raw_string_ostream vos(verr);
-  if (llvm::verifyModule(*mod, &vos)) return fail("invalid IR: " + vos.str());
+  if (llvm::verifyModule(*mod, &vos)) return "invalid IR: " + vos.str();
   if (auto e = (*jit)->addIRModule(llvm::orc::ThreadSafeModule(std::move(mod), std::move(ctx))))
-    return fail(message(std::move(e)));
+    return message(std::move(e));
   auto sym = (*jit)->lookup("dc_kernel");  // compiles
-  if (!sym) return fail(message(sym.takeError()));
-
-  std::shared_ptr<JitKernel> k(new JitKernel());
-  k->fn_ = reinterpret_cast<JitKernel::Fn>(static_cast<std::uintptr_t>(sym->getAddress()));
-  k->width_ = isa.width;
-  k->isa_ = isa.name;
-  k->n_inputs_ = p.n_inputs();
-  k->session_ = std::make_unique<JitKernel::Session>();
-  k->session_->jit = std::move(*jit);
-  k->compile_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  return k;
+  if (!sym) return message(sym.takeError());
+  auto session = std::make_unique<Session>();
+  session->jit = std::move(*jit);
+  out->fn = reinterpret_cast<void*>(static_cast<std::uintptr_t>(sym->getAddress()));
+  out->session = session.release();
+  out->compile_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return "";
 }
 
+}  // namespace
 }  // namespace dc::num
-#endif  // DERIVCHECK_HAVE_JIT
+
+extern "C" __attribute__((visibility("default"))) int derivcheck_jit_build(const dc::num::Program* p, const char* isa,
+                                                                          int width, DerivcheckJitResult* out) {
+  std::string why;
+  try {
+    const dc::num::IsaSpec* spec = nullptr;
+    for (const auto& s : dc::num::kIsas)
+      if (std::strcmp(s.name, isa) == 0 && s.width == width) spec = &s;
+    why = spec ? dc::num::build(*p, *spec, out) : std::string("the JIT module has no instruction set ") + isa;
+  } catch (const std::exception& e) {
+    why = e.what();
+  }
+  if (why.empty()) return 0;
+  std::snprintf(out->why, sizeof out->why, "%s", why.c_str());
+  return 1;
+}
+
+extern "C" __attribute__((visibility("default"))) void derivcheck_jit_free(void* session) {
+  delete static_cast<dc::num::Session*>(session);
+}
