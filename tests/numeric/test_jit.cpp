@@ -10,6 +10,8 @@
 #include <random>
 #include <thread>
 
+#include <unistd.h>
+
 #include "numeric/evaluator.hpp"
 #include "numeric/exact.hpp"
 #include "numeric/jit.hpp"
@@ -273,4 +275,45 @@ TEST_CASE("JIT: an instruction set the host lacks or does not know is refused", 
   std::string why;
   CHECK(JitKernel::compile(compile(x + y, {x, y}), &why, "neon") == nullptr);
   CHECK_THAT(why, Catch::Contains("neon"));
+}
+
+TEST_CASE("JIT: chart evalpoints runs the JIT, and the tape under DERIVCHECK_JIT=0", "[numeric][jit][cli]") {
+  const std::string src = DERIVCHECK_SOURCE_DIR, dir = std::string(std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
+  const std::string pts = dir + "/derivcheck_test_jit_pts_" + std::to_string(::getpid()) + ".bin",
+                    out = dir + "/derivcheck_test_jit_out_" + std::to_string(::getpid()) + ".bin";
+  {
+    std::mt19937_64 rng(4);
+    std::vector<double> v(4 * 37);
+    for (double& d : v) d = std::uniform_real_distribution<double>(0.1, 1.0)(rng);
+    std::FILE* f = std::fopen(pts.c_str(), "wb");
+    REQUIRE(f);
+    REQUIRE(std::fwrite(v.data(), sizeof(double), v.size(), f) == v.size());
+    std::fclose(f);
+  }
+  auto run_cli = [&](const std::string& env) {
+    const std::string cmd = env + " '" + DERIVCHECK_CLI + "' chart evalpoints '" + src +
+                            "/derivations/handout9/07_two_ball_bounce.dc' v1p_bounce --inputs mu,e2,e12,v0 --points-file '" +
+                            pts + "' --out-file '" + out + "' --repeats 1";
+    std::string text;
+    std::FILE* p = ::popen(cmd.c_str(), "r");
+    REQUIRE(p);
+    char buf[4096];
+    std::size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) text.append(buf, n);
+    REQUIRE(::pclose(p) == 0);
+    std::FILE* f = std::fopen(out.c_str(), "rb");
+    REQUIRE(f);
+    std::vector<double> y(37);
+    REQUIRE(std::fread(y.data(), sizeof(double), y.size(), f) == y.size());
+    std::fclose(f);
+    return std::pair{text, y};
+  };
+  const auto [jit_text, jit_y] = run_cli("");
+  const auto [tape_text, tape_y] = run_cli("DERIVCHECK_JIT=0");
+  CHECK_THAT(tape_text, Catch::Contains("(tape)"));
+  if (jit_enabled()) CHECK_THAT(jit_text, Catch::Contains("(JIT, " + jit_host_isa() + ")"));
+  // v1p_bounce is rational: the JIT and the tape agree bit for bit
+  CHECK(std::memcmp(jit_y.data(), tape_y.data(), jit_y.size() * sizeof(double)) == 0);
+  std::remove(pts.c_str());
+  std::remove(out.c_str());
 }
