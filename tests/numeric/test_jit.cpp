@@ -317,3 +317,35 @@ TEST_CASE("JIT: chart evalpoints runs the JIT, and the tape under DERIVCHECK_JIT
   std::remove(pts.c_str());
   std::remove(out.c_str());
 }
+
+TEST_CASE("JIT: programs whose result is an input or a constant, no inputs, many inputs", "[numeric][jit]") {
+  if (!jit_enabled()) { WARN("no JIT in this build"); return; }
+  const std::size_t n = 19;  // a tail on every width
+  {
+    std::vector<std::vector<double>> cols{std::vector<double>(n)};
+    for (std::size_t i = 0; i < n; ++i) cols[0][i] = -0.5 * static_cast<double>(i);
+    const auto got = run(*jit_of(compile(x, {x})), cols, n);  // the result is input 0
+    CHECK(std::memcmp(got.data(), cols[0].data(), n * sizeof(double)) == 0);
+  }
+  {
+    const Program p = compile(ex(3) / 7 + GiNaC::sqrt(ex(2)), {});  // folded to one constant, no inputs
+    const auto got = run(*jit_of(p), {}, n), want = tape(p, {}, n);
+    for (std::size_t i = 0; i < n; ++i) CHECK(same_bits(got[i], want[i]));
+  }
+  {
+    // 20 inputs: more than the tail's stack buffers hold
+    std::vector<symbol> s;
+    ex sum = 0;
+    for (int j = 0; j < 20; ++j) {
+      s.emplace_back("a" + std::to_string(j));
+      sum += (j + 1) * s.back() * s.back();
+    }
+    const Program p = compile(GiNaC::sqrt(sum), s);
+    std::vector<std::vector<double>> cols(20, std::vector<double>(n));
+    std::mt19937_64 rng(8);
+    for (auto& c : cols)
+      for (double& v : c) v = logu(rng, -3, 3);
+    const auto got = run(*jit_of(p), cols, n), want = tape(p, cols, n);
+    for (std::size_t i = 0; i < n; ++i) CHECK(same_bits(got[i], want[i]));
+  }
+}
