@@ -2,10 +2,12 @@
 // (docs/charts.md). All measuring lives in numeric/chart_data.cpp, all drawing in
 // numeric/chart_plot.cpp; this file parses options, picks files and names.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <set>
@@ -37,6 +39,7 @@ struct ChartArgs {
   std::vector<std::string> positional;
   std::string inputs, points_file, out_file;
   bool no_figures = false;
+  bool serve = false;   // evalpoints: timing requests on stdin (interleaved peers)
   // checker
   std::string corpus, ks = "1,2,4,8", digits = "20,30,50,100";
 };
@@ -388,24 +391,64 @@ int run_evalpoints(const ChartArgs& a) {
     for (std::size_t j = 0; j < k; ++j) cols[j][i] = flat[i * k + j];
   std::vector<const double*> cp;
   for (auto& c : cols) cp.push_back(c.data());
-  const dc::num::Evaluator<double> ev(dc::num::compile(pf.expr, syms));
-  std::vector<double> out(n);
-  const Stat t = time_per_op([&] { ev.eval_batch(cp.data(), out.data(), n); }, static_cast<long>(n), a.repeats);
+  // The default fast path: Evaluator<double>::eval_batch, i.e. the JIT where available
+  // (compiled here, before any timing: a user pays it once per formula), else the tape.
+  const dc::num::Program prog = dc::num::compile(pf.expr, syms);
+  const dc::num::Evaluator<double> ev(prog);
+  std::vector<double> out(n), tout(n), hout(n);
+  const auto c0 = std::chrono::steady_clock::now();
+  ev.eval_batch(cp.data(), out.data(), 1);
+  const double first_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - c0).count();
+  const bool has_hw = static_cast<bool>(hand_written(f.label, names));
+  const std::map<std::string, std::function<void()>> tools = {
+      {"derivcheck", [&] { ev.eval_batch(cp.data(), out.data(), n); }},
+      {"tape", [&] { ev.eval_batch_tape(cp.data(), tout.data(), n); }},
+      {"handwritten", [&] { hand_written_batch(f.label, names, cp.data(), hout.data(), n); }}};
   nlohmann::json j;
-  j["evals_per_s"] = 1 / t.median;
-  j["ns_per_eval"] = {{"median", t.median * 1e9}, {"min", t.min * 1e9}, {"max", t.max * 1e9}};
   j["points"] = n;
-  j["method"] = "Evaluator<double>::eval_batch";
-  if (hand_written(f.label, names)) {
-    std::vector<double> hout(n);
-    const Stat h = time_per_op([&] { hand_written_batch(f.label, names, cp.data(), hout.data(), n); },
-                               static_cast<long>(n), a.repeats);
-    j["handwritten_evals_per_s"] = 1 / h.median;
-    j["handwritten_ns_per_eval"] = {{"median", h.median * 1e9}, {"min", h.min * 1e9}, {"max", h.max * 1e9}};
+  j["method"] = ev.jit() ? "Evaluator<double>::eval_batch (JIT, " + ev.jit()->isa() + ")" : "Evaluator<double>::eval_batch (tape)";
+  j["jit_isa"] = ev.jit() ? ev.jit()->isa() : "";
+  j["jit_width"] = ev.jit() ? ev.jit()->width() : 0;
+  j["compile_ms"] = ev.jit() ? ev.jit()->compile_ms() : first_ms;
+  j["handwritten"] = has_hw;
+  if (a.serve) {
+    // Interleaved timing for bench/peers/peer_eval.py: one line per request on stdin
+    // ("derivcheck", "tape" or "handwritten"), answered with {"tool":..,"ns_per_eval":..}; the
+    // caller times its own peers in between. EOF or "quit" ends (then the results are written).
+    std::cout << dc::json_text(j) << std::endl;
+    std::string line;
+    while (std::getline(std::cin, line) && line != "quit") {
+      auto it = tools.find(line);
+      if (it == tools.end() || (line == "handwritten" && !has_hw)) {
+        std::cout << nlohmann::json{{"tool", line}, {"error", "no such tool"}}.dump() << std::endl;
+        continue;
+      }
+      const auto t0 = std::chrono::steady_clock::now();
+      it->second();
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      std::cout << nlohmann::json{{"tool", line}, {"ns_per_eval", s / static_cast<double>(n) * 1e9}}.dump() << std::endl;
+    }
+  } else {
+    // --repeats R: the tools interleaved (derivcheck, tape, handwritten, derivcheck, ...)
+    std::map<std::string, std::vector<double>> ts;
+    for (int r = 0; r < a.repeats; ++r)
+      for (const char* t : {"derivcheck", "tape", "handwritten"}) {
+        if (std::string(t) == "handwritten" && !has_hw) continue;
+        const Stat one = time_per_op(tools.at(t), static_cast<long>(n), 1);
+        ts[t].push_back(one.median);
+      }
+    auto put = [&](const std::string& key, std::vector<double> v) {
+      const Stat st = stat_of(std::move(v));
+      j[key] = {{"median", st.median * 1e9}, {"min", st.min * 1e9}, {"max", st.max * 1e9}};
+      return st;
+    };
+    j["evals_per_s"] = 1 / put("ns_per_eval", ts["derivcheck"]).median;
+    put("tape_ns_per_eval", ts["tape"]);
+    if (has_hw) j["handwritten_evals_per_s"] = 1 / put("handwritten_ns_per_eval", ts["handwritten"]).median;
   }
   std::string bytes(reinterpret_cast<const char*>(out.data()), out.size() * sizeof(double));
   dc::write_file_atomic(a.out_file, bytes);
-  std::cout << dc::json_text(j) << "\n";
+  if (!a.serve) std::cout << dc::json_text(j) << "\n";
   return 0;
 }
 
@@ -434,6 +477,7 @@ const dc::cli::CommandRegistrar reg(
       sub.add_option("--inputs", a->inputs, "evalpoints: parameter order of the points file");
       sub.add_option("--points-file", a->points_file, "evalpoints: raw float64 points, row-major");
       sub.add_option("--out-file", a->out_file, "evalpoints: raw float64 results");
+      sub.add_flag("--serve", a->serve, "evalpoints: time one tool per stdin line (derivcheck | tape | handwritten), for interleaved peers");
       return [a]() -> int {
         try {
           prepare_output(*a);

@@ -2,14 +2,19 @@
 // in one run. Formula: the general impact v'1 = (m1 v1 + m2 v2 - e m2 (v1 - v2))/(m1 + m2),
 // loaded by label from derivations/handout9/05_direct_impact.dc (v1p_general).
 // Throughput = items_per_second (evaluations per second). Figures: docs/performance.md.
+// The JIT (numeric/jit.hpp) on the same points, at each vector width the host has, and on
+// Example 9.5's deflection (acos, sqrt: SLEEF against libm); BM_jit_compile* is what a user
+// pays once per formula.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <random>
 
 #include "derivations/core/derivation.hpp"
 #include "derivations/core/prove.hpp"
 #include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
+#include "numeric/jit.hpp"
 
 namespace {
 
@@ -101,12 +106,107 @@ void BM_tape_scalar(benchmark::State& st) {
 void BM_tape_batch(benchmark::State& st) {
   const auto& D = data();
   dc::num::Evaluator<double> ev(D.prog);
+  std::vector<const double*> cols;
+  for (Eigen::Index j = 0; j < D.in.cols(); ++j) cols.push_back(D.in.col(j).data());
   Eigen::ArrayXd out(kPoints);
   for (auto _ : st) {
-    ev.eval_batch(D.in, out);
+    ev.eval_batch_tape(cols.data(), out.data(), kPoints);
     benchmark::DoNotOptimize(out.data());
   }
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+
+// The JIT kernel for the instruction set `isa` ("" = the host's widest); skipped where the host
+// lacks it or the build has no JIT.
+void run_jit(benchmark::State& st, const dc::num::Program& prog, const Eigen::ArrayXXd& in, const char* isa) {
+  std::string why;
+  const auto k = dc::num::JitKernel::compile(prog, &why, isa);
+  if (!k) {
+    st.SkipWithError(why.c_str());
+    return;
+  }
+  std::vector<const double*> cols;
+  for (Eigen::Index j = 0; j < in.cols(); ++j) cols.push_back(in.col(j).data());
+  Eigen::ArrayXd out(in.rows());
+  for (auto _ : st) {
+    (*k)(cols.data(), out.data(), static_cast<std::size_t>(in.rows()));
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetLabel(k->isa() + ", W=" + std::to_string(k->width()));
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * in.rows()));
+}
+
+void BM_jit_batch(benchmark::State& st) { run_jit(st, data().prog, data().in, ""); }
+void BM_jit_batch_avx2(benchmark::State& st) { run_jit(st, data().prog, data().in, "avx2"); }
+void BM_jit_batch_sse2(benchmark::State& st) { run_jit(st, data().prog, data().in, "sse2"); }
+
+void BM_jit_compile(benchmark::State& st) {
+  const auto& D = data();
+  for (auto _ : st) {
+    auto k = dc::num::JitKernel::compile(D.prog);
+    if (!k) {
+      st.SkipWithError("no JIT");
+      return;
+    }
+    benchmark::DoNotOptimize(k.get());
+  }
+}
+
+// Example 9.5: theta = acos(1 - (m/(M+m))^2 v0^2/(2 L g)), points where the acos argument is
+// in [-1, 1]
+struct Deflection {
+  dc::num::Program prog;
+  Eigen::ArrayXXd in;
+  Deflection() {
+    static const dc::Derivation d =
+        dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/derivations/handout9/06_ballistic_pendulum.dc");
+    const dc::Formula f = dc::formula(d, "deflection");
+    prog = dc::num::compile(f.expr, f.params);
+    std::mt19937_64 rng(2);
+    std::uniform_real_distribution<double> u(0.5, 2.0);
+    in.resize(kPoints, static_cast<Eigen::Index>(f.params.size()));
+    for (Eigen::Index i = 0; i < in.rows(); ++i)
+      for (Eigen::Index j = 0; j < in.cols(); ++j) in(i, j) = u(rng);
+    dc::num::Evaluator<double> ev(prog);
+    Eigen::ArrayXd out;
+    ev.eval_batch(in, out);
+    for (Eigen::Index i = 0; i < in.rows(); ++i)  // redraw points outside acos's domain
+      while (!std::isfinite(out(i))) {
+        for (Eigen::Index j = 0; j < in.cols(); ++j) in(i, j) = u(rng);
+        std::vector<double> x(in.cols());
+        for (Eigen::Index j = 0; j < in.cols(); ++j) x[static_cast<std::size_t>(j)] = in(i, j);
+        out(i) = ev(x);
+      }
+  }
+};
+const Deflection& deflection() {
+  static const Deflection d;
+  return d;
+}
+
+void BM_tape_batch_deflection(benchmark::State& st) {
+  const auto& D = deflection();
+  dc::num::Evaluator<double> ev(D.prog);
+  std::vector<const double*> cols;
+  for (Eigen::Index j = 0; j < D.in.cols(); ++j) cols.push_back(D.in.col(j).data());
+  Eigen::ArrayXd out(kPoints);
+  for (auto _ : st) {
+    ev.eval_batch_tape(cols.data(), out.data(), kPoints);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+void BM_jit_batch_deflection(benchmark::State& st) { run_jit(st, deflection().prog, deflection().in, ""); }
+void BM_jit_batch_deflection_avx2(benchmark::State& st) { run_jit(st, deflection().prog, deflection().in, "avx2"); }
+void BM_jit_compile_deflection(benchmark::State& st) {
+  for (auto _ : st) {
+    auto k = dc::num::JitKernel::compile(deflection().prog);
+    if (!k) {
+      st.SkipWithError("no JIT");
+      return;
+    }
+    benchmark::DoNotOptimize(k.get());
+  }
 }
 
 void BM_tape_batch_long_double(benchmark::State& st) {
@@ -171,9 +271,17 @@ BENCHMARK(BM_hand_written);
 BENCHMARK(BM_hand_written_scalar);
 BENCHMARK(BM_tape_scalar);
 BENCHMARK(BM_tape_batch);
+BENCHMARK(BM_jit_batch);
+BENCHMARK(BM_jit_batch_avx2);
+BENCHMARK(BM_jit_batch_sse2);
+BENCHMARK(BM_tape_batch_deflection);
+BENCHMARK(BM_jit_batch_deflection);
+BENCHMARK(BM_jit_batch_deflection_avx2);
 BENCHMARK(BM_tape_batch_long_double);
 BENCHMARK(BM_tape_batch_compensated);
 BENCHMARK(BM_tape_scalar_compensated);
 BENCHMARK(BM_ginac_evalf);
 BENCHMARK(BM_compile);
+BENCHMARK(BM_jit_compile)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_jit_compile_deflection)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

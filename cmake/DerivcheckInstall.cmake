@@ -3,6 +3,7 @@
 #
 #   PREFIX/bin/derivcheck
 #   PREFIX/lib/libderivcheck_symbolic.a, libderivcheck_numeric.a
+#   PREFIX/lib/libderivcheck_jit.so                  the JIT module (when built), dlopen'ed
 #   PREFIX/include/derivcheck/catch2.hpp            <derivcheck/catch2.hpp>, forwards to
 #   PREFIX/include/derivcheck/derivations/...       the headers, tree kept ("derivations/core/x.hpp")
 #   PREFIX/include/derivcheck/numeric/...
@@ -26,6 +27,10 @@ install(TARGETS derivcheck_symbolic derivcheck EXPORT derivcheck-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS derivcheck_numeric EXPORT derivcheck-numeric-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The JIT module (numeric/jit.hpp): loaded at run time from PREFIX/LIBDIR, not linked.
+if(TARGET derivcheck_jit)
+  install(TARGETS derivcheck_jit LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endif()
 install(EXPORT derivcheck-targets NAMESPACE derivcheck:: DESTINATION ${DERIVCHECK_INSTALL_CMAKEDIR})
 install(EXPORT derivcheck-numeric-targets NAMESPACE derivcheck:: DESTINATION ${DERIVCHECK_INSTALL_CMAKEDIR})
 if(TARGET derivcheck_catch2)

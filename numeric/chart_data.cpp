@@ -374,6 +374,7 @@ std::vector<WpRow> closed_form_wp(const std::string& path, const std::string& la
       for (std::size_t j : idx) a.push_back(x[j]);
       return ev(a.data());
     };
+    ev.eval_batch(cp.data(), out.data(), 1);  // the JIT compiles here, outside the timing
     add_double_method(c.method, one, [&] { ev.eval_batch(cp.data(), out.data(), n_batch); }, static_cast<long>(n_batch));
   }
   // long double through the evaluator
@@ -543,6 +544,7 @@ ClosedAllResult closed_forms_wp_all(const std::vector<std::string>& paths, const
       }
       // the evaluator in double and long double
       const num::Evaluator<double> ev(*prog);
+      ev.eval_batch(cp.data(), out.data(), 1);  // the JIT compiles here, outside the timing
       add_double("double (evaluator)", [&](const std::vector<double>& x) { return ev(x); },
                  [&] { ev.eval_batch(cp.data(), out.data(), n); });
       {

@@ -19,9 +19,13 @@
 //       sqrt(x^2 + y^2)    -> hypot(x, y) (no overflow of the squares)
 //   - temporaries are given registers by liveness, so the working set stays small.
 //
-// Evaluation: Evaluator<T>::operator() walks the tape for one point; eval_batch() runs each
-// instruction over a block of points before the next instruction, so the inner loops are
-// plain array loops that the compiler vectorises.
+// Evaluation: Evaluator<T>::operator() walks the tape for one point; eval_batch_tape() runs
+// each instruction over a block of points before the next instruction, so the inner loops are
+// plain array loops that the compiler vectorises. Evaluator<double>::eval_batch() is the fast
+// path: on its first call it JIT-compiles the program to SIMD machine code (numeric/jit.hpp,
+// LLVM + SLEEF) and uses that from then on; where the JIT is unavailable, switched off
+// (DERIVCHECK_JIT=0) or fails, it is eval_batch_tape(). The JIT's + - * / sqrt abs are bit for
+// bit the tape's; its transcendental functions are SLEEF's (at most 1 ulp, docs/numeric.md).
 #pragma once
 #include <cmath>
 #include <cstddef>
@@ -32,6 +36,8 @@
 
 #include <Eigen/Core>
 #include <ginac/ginac.h>
+
+#include "numeric/jit.hpp"
 
 namespace dc::num {
 
@@ -156,8 +162,27 @@ class Evaluator {
     return (*this)(args.data());
   }
 
-  // Many points: columns[i] points at n values of input i; writes n results to out.
+  // Many points: columns[i] points at n values of input i; writes n results to out. For
+  // double: the JIT when available (compiled on the first call), else the tape.
   void eval_batch(const T* const* columns, T* out, std::size_t n) const {
+    if constexpr (std::is_same_v<T, double>) {
+      if (!jit_tried_) {
+        jit_ = JitKernel::compile(prog_);
+        jit_tried_ = true;
+      }
+      if (jit_) {
+        (*jit_)(columns, out, n);
+        return;
+      }
+    }
+    eval_batch_tape(columns, out, n);
+  }
+
+  // The JIT kernel eval_batch uses (nullptr before the first call, or on the tape).
+  const JitKernel* jit() const { return jit_.get(); }
+
+  // Many points through the tape interpreter, whatever the JIT.
+  void eval_batch_tape(const T* const* columns, T* out, std::size_t n) const {
     const std::size_t nreg = prog_.n_registers, nin = prog_.n_inputs(),
                       first_temp = prog_.first_temp();
     if (block_.size() != nreg * kBlock) {
@@ -201,6 +226,8 @@ class Evaluator {
   Program prog_;
   mutable std::vector<T> regs_;
   mutable std::vector<T> block_;
+  mutable std::shared_ptr<const JitKernel> jit_;  // shared by copies; calling it is thread-safe
+  mutable bool jit_tried_ = false;
 };
 
 }  // namespace dc::num

@@ -5,6 +5,7 @@ set -euo pipefail
 pkgs=(g++ cmake make pkg-config
       libginac-dev libcln-dev libflint-arb-dev libeigen3-dev catch2 libboost-dev libbenchmark-dev
       nlohmann-json3-dev libcli11-dev gnuplot-nox parallel
+      llvm-14-dev libsleef-dev
       texlive-latex-base texlive-latex-recommended texlive-pictures texlive-science poppler-utils)
 missing=()
 for p in "${pkgs[@]}"; do

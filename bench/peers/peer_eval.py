@@ -4,11 +4,15 @@
 For each formula (FILE:LABEL, loaded from the derivation file by label):
   1. draw N seeded random points from the symbols' declared domains (points where the formula
      is not real are redrawn), written as raw little-endian float64, row-major N x k;
-  2. NumPy: f = lambdify(inputs, expr, "numpy"); time f(*columns) over all N points (median
-     of R repeats, min and max); 
-  3. derivcheck: `derivcheck chart evalpoints FILE LABEL --points-file P --out-file O --repeats R`
-     (the same points; the batch API of numeric/evaluator.hpp; also the hand-written C++
-     function where the chart command has one) -- "not available yet" if the command fails;
+  2. derivcheck: `derivcheck chart evalpoints FILE LABEL --points-file P --out-file O --serve`
+     loads the same points and compiles the formula (the batch API of numeric/evaluator.hpp:
+     the JIT, numeric/jit.hpp, where available), then times one evaluation of all N points per
+     request on stdin -- "derivcheck" (the default fast path) or "handwritten" (the hand-written
+     C++ function where the chart command has one); "not available yet" if it fails;
+  3. NumPy: f = lambdify(inputs, expr, "numpy"); f(*columns) over all N points, timed here;
+     the repeats are interleaved: derivcheck, numpy, handwritten, derivcheck, numpy, ... and
+     each tool's median (min, max) is reported. Only the evaluation is timed, never process
+     start or loading;
   4. errors of both against a 50-digit mpmath reference on the first M points (ulps of double
      at the reference value; max and median).
 Prints one JSON object per formula on stdout.
@@ -66,14 +70,43 @@ def ulps(computed, ref):
     return e
 
 
-def time_numpy(f, pts, repeats):
-    cols = [np.ascontiguousarray(pts[:, j]) for j in range(pts.shape[1])]
-    ts = []
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        y = f(*cols)
-        ts.append(time.perf_counter() - t0)
-    return np.median(ts), min(ts), max(ts), np.broadcast_to(y, (pts.shape[0],))
+def numpy_once(f, cols):
+    t0 = time.perf_counter()
+    y = f(*cols)
+    return time.perf_counter() - t0, y
+
+
+def stat(ts):
+    return {"median": float(np.median(ts)), "min": float(min(ts)), "max": float(max(ts))}
+
+
+class Server:
+    """derivcheck chart evalpoints --serve: one timing per request line."""
+
+    def __init__(self, cmd):
+        self.p = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                  text=True, bufsize=1)
+        line = self.p.stdout.readline()
+        if not line:
+            err = self.p.stderr.read().strip().splitlines()
+            self.p.wait()
+            raise RuntimeError(err[-1] if err else f"exit {self.p.returncode}")
+        self.info = json.loads(line)
+
+    def time(self, tool):
+        self.p.stdin.write(tool + "\n")
+        self.p.stdin.flush()
+        r = json.loads(self.p.stdout.readline())
+        if "error" in r:
+            raise RuntimeError(f"{tool}: {r['error']}")
+        return r["ns_per_eval"]
+
+    def close(self):
+        self.p.stdin.write("quit\n")
+        self.p.stdin.close()
+        rc = self.p.wait(timeout=600)
+        if rc != 0:
+            raise RuntimeError(self.p.stderr.read().strip() or f"exit {rc}")
 
 
 def main():
@@ -93,10 +126,32 @@ def main():
         doms = dcfile.symbol_domains(path)
         f = sp.lambdify(inputs, expr, "numpy")
         pts = real_points(f, doms, inputs, a.n, rng)
-        med, lo, hi, y_np = time_numpy(f, pts, a.repeats)
+        cols = [np.ascontiguousarray(pts[:, j]) for j in range(pts.shape[1])]
         row = {"formula": f"{os.path.basename(path)}:{label}", "inputs": [str(s) for s in inputs],
-               "n": a.n, "seed": a.seed, "numpy_evals_per_s": a.n / med,
-               "numpy_ns_per_eval": {"median": med / a.n * 1e9, "min": lo / a.n * 1e9, "max": hi / a.n * 1e9}}
+               "n": a.n, "seed": a.seed, "repeats": a.repeats}
+        pfile = os.path.join(a.tmp, f"peer_pts_{label}.bin")
+        ofile = os.path.join(a.tmp, f"peer_out_{label}.bin")
+        pts.astype("<f8").tofile(pfile)
+        cmd = [a.cli, "chart", "evalpoints", path, label, "--inputs", ",".join(row["inputs"]),
+               "--points-file", pfile, "--out-file", ofile, "--serve"]
+        try:
+            srv = Server(cmd)
+        except Exception as ex:  # the derivcheck side has not landed (or failed): say so
+            srv = None
+            row["derivcheck"] = f"not available yet ({'derivcheck not built' if isinstance(ex, FileNotFoundError) else ex})"
+        ts = {"derivcheck": [], "numpy": [], "handwritten": []}
+        y_np = None
+        for _ in range(a.repeats):  # interleaved: derivcheck, numpy, handwritten, derivcheck, ...
+            if srv:
+                ts["derivcheck"].append(srv.time("derivcheck"))
+            t, y_np = numpy_once(f, cols)
+            ts["numpy"].append(t / a.n * 1e9)
+            if srv and srv.info.get("handwritten"):
+                ts["handwritten"].append(srv.time("handwritten"))
+        y_np = np.broadcast_to(y_np, (pts.shape[0],))
+        nn = stat(ts["numpy"])
+        row["numpy_ns_per_eval"] = nn
+        row["numpy_evals_per_s"] = 1e9 / nn["median"]
         # 50-digit reference on the first M points (mpmath, exact double inputs)
         m = min(a.ref_points, a.n)
         fm = sp.lambdify(inputs, expr, "mpmath")
@@ -105,27 +160,23 @@ def main():
         ref = np.array([float(fm(*[mpmath.mpf(float(x)) for x in pts[i]])) for i in range(m)])
         e_np = ulps(y_np[:m], ref)
         row["numpy_ulps"] = {"max": float(np.max(e_np)), "median": float(np.median(e_np))}
-        # derivcheck on the same points
-        pfile = os.path.join(a.tmp, f"peer_pts_{label}.bin")
-        ofile = os.path.join(a.tmp, f"peer_out_{label}.bin")
-        pts.astype("<f8").tofile(pfile)
-        cmd = [a.cli, "chart", "evalpoints", path, label, "--inputs", ",".join(row["inputs"]),
-               "--points-file", pfile, "--out-file", ofile, "--repeats", str(a.repeats)]
-        try:
-            r = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
-            if r.returncode != 0:
-                raise RuntimeError(r.stderr.strip().splitlines()[-1] if r.stderr.strip() else f"exit {r.returncode}")
-            dc = json.loads(r.stdout.strip().splitlines()[-1])
-            y_dc = np.fromfile(ofile, dtype="<f8")
-            e_dc = ulps(y_dc[:m], ref)
-            row["derivcheck"] = dc
-            row["derivcheck_ulps"] = {"max": float(np.max(e_dc)), "median": float(np.median(e_dc))}
-            row["ratio_vs_numpy"] = dc["evals_per_s"] / row["numpy_evals_per_s"]
-            if dc.get("handwritten_evals_per_s"):
-                row["fraction_of_handwritten"] = dc["evals_per_s"] / dc["handwritten_evals_per_s"]
-        except Exception as ex:  # the derivcheck side has not landed (or failed): say so
-            ex = "derivcheck not built" if isinstance(ex, FileNotFoundError) else ex
-            row["derivcheck"] = f"not available yet ({ex})"
+        if srv:
+            try:
+                srv.close()
+                y_dc = np.fromfile(ofile, dtype="<f8")
+                e_dc = ulps(y_dc[:m], ref)
+                dn = stat(ts["derivcheck"])
+                dc = dict(srv.info, ns_per_eval=dn, evals_per_s=1e9 / dn["median"])
+                if ts["handwritten"]:
+                    hw = stat(ts["handwritten"])
+                    dc["handwritten_ns_per_eval"] = hw
+                    dc["handwritten_evals_per_s"] = 1e9 / hw["median"]
+                    row["fraction_of_handwritten"] = dc["evals_per_s"] / dc["handwritten_evals_per_s"]
+                row["derivcheck"] = dc
+                row["derivcheck_ulps"] = {"max": float(np.max(e_dc)), "median": float(np.median(e_dc))}
+                row["ratio_vs_numpy"] = dc["evals_per_s"] / row["numpy_evals_per_s"]
+            except Exception as ex:
+                row["derivcheck"] = f"not available yet ({ex})"
         for fn in (pfile, ofile):
             if os.path.exists(fn):
                 os.remove(fn)

@@ -3,7 +3,7 @@
 docs/charts/peer_*.csv and the Markdown of the "Peers" section, spliced into
 docs/performance.md between <!-- peers:begin --> and <!-- peers:end -->.  Files are written
 atomically (temporary file + rename).  Targets (issue 5): handout check >= 20x faster than SymPy
-while checking more; evaluator >= 2x NumPy and >= 50% of hand-written C++; each scene >= 20x
+while checking more; evaluator >= 2x NumPy and >= 60% of hand-written C++ (issue 11); each scene >= 20x
 faster than SciPy's best at equal accuracy.  A miss is stated with its factor.
 
 Usage: peer_report.py --root DIR --check J --eval J --scenes J --machine TEXT --build TEXT --command TEXT
@@ -94,52 +94,70 @@ def main():
     rows = jlines(a.eval)
     out = io.StringIO()
     w = csv.writer(out)
-    w.writerow(["formula", "tool", "evals_per_s", "ns_per_eval_median", "ns_per_eval_min", "ns_per_eval_max",
-                "ulps_max", "ulps_median"])
-    p("### Closed-form evaluation: SymPy `lambdify` + NumPy vs the fast evaluator")
+    w.writerow(["formula", "tool", "ns_per_eval_median"])
+    p("### Closed-form evaluation: SymPy `lambdify` + NumPy vs the fast evaluator vs hand-written C++")
     p()
     n = rows[0]["n"] if rows else 0
+    reps = rows[0].get("repeats", "?") if rows else "?"
+    isa = next((r["derivcheck"].get("jit_isa") for r in rows if isinstance(r["derivcheck"], dict)), "")
     p(f"Method: each formula loaded by label from its derivation file; {n} seeded random points from the"
-      " declared domains (the same points for both); NumPy evaluates whole arrays, derivcheck its batch"
-      " API (`Evaluator<double>::eval_batch`); time per evaluation is the median over repeats"
-      " (min–max in brackets). Errors in ulps of double against a 50-digit mpmath reference on the"
-      " first points. Hand-written C++ is the speed limit where one exists.")
+      " declared domains, the same points for all three tools, single-threaded. derivcheck is its default"
+      " batch path (`Evaluator<double>::eval_batch`: "
+      + (f"the JIT, {isa} vectors, SLEEF for transcendental functions" if isa else "the tape interpreter") +
+      "), served by `derivcheck chart evalpoints --serve`, which times one evaluation of all points per"
+      " request; NumPy is timed in the Python process between requests; hand-written C++ is"
+      " `hand_written_batch` in numeric/chart_data.cpp (same compiler flags as derivcheck). The"
+      f" {reps} repeats are interleaved (derivcheck, NumPy, hand-written, derivcheck, ...); the table"
+      " shows medians, min–max in brackets. Only the evaluation is timed (not process start, loading or"
+      " the JIT compilation, shown separately). Errors in ulps of double against a 50-digit mpmath"
+      " reference on the first points. Targets (issue 11): derivcheck ≥ 2x NumPy on every formula and"
+      " ≥ 60% of hand-written speed where one exists.")
     p()
-    p("| formula | NumPy [ns/eval] | derivcheck [ns/eval] | ratio | hand-written [ns/eval] | of hand-written | NumPy ulps max/median | derivcheck ulps max/median |")
-    p("|---|---|---|---|---|---|---|---|")
+    p("| formula | NumPy [ns/eval] | derivcheck [ns/eval] | vs NumPy (≥ 2x) | hand-written [ns/eval] | of hand-written (≥ 60%) | JIT compile [ms] | NumPy ulps max/median | derivcheck ulps max/median |")
+    p("|---|---|---|---|---|---|---|---|---|")
     for r in rows:
         nn = r["numpy_ns_per_eval"]
-        w.writerow([r["formula"], "numpy", r["numpy_evals_per_s"], nn["median"], nn["min"], nn["max"],
-                    r["numpy_ulps"]["max"], r["numpy_ulps"]["median"]])
         dcv = r["derivcheck"]
         if isinstance(dcv, dict):
             dn = dcv["ns_per_eval"]
-            w.writerow([r["formula"], "derivcheck", dcv["evals_per_s"], dn["median"], dn["min"], dn["max"],
-                        r["derivcheck_ulps"]["max"], r["derivcheck_ulps"]["median"]])
+            w.writerow([r["formula"], "derivcheck", dn["median"]])
+            w.writerow([r["formula"], "numpy", nn["median"]])
             hw = dcv.get("handwritten_ns_per_eval")
             if hw:
-                w.writerow([r["formula"], "handwritten", 1e9 / hw["median"], hw["median"], hw["min"], hw["max"], "", ""])
+                w.writerow([r["formula"], "handwritten", hw["median"]])
+            frac = r.get("fraction_of_handwritten")
             p(f"| {r['formula']} | {nn['median']:.2f} [{nn['min']:.2f}–{nn['max']:.2f}] | {dn['median']:.2f} "
               f"[{dn['min']:.2f}–{dn['max']:.2f}] | **{r['ratio_vs_numpy']:.2f}x** ({verdict(r['ratio_vs_numpy'], 2)}) | "
-              f"{g(hw['median'], '{:.2f}') if hw else '—'} | "
-              f"{(str(round(100 * r['fraction_of_handwritten'])) + '%') if r.get('fraction_of_handwritten') else '—'} | "
+              f"{(g(hw['median'], '{:.2f}') + ' [' + g(hw['min'], '{:.2f}') + '–' + g(hw['max'], '{:.2f}') + ']') if hw else '—'} | "
+              f"{(str(round(100 * frac)) + '% (' + verdict(frac, 0.6) + ')') if frac else '—'} | "
+              f"{dcv.get('compile_ms', 0):.1f} | "
               f"{r['numpy_ulps']['max']:.0f} / {r['numpy_ulps']['median']:.0f} | "
               f"{r['derivcheck_ulps']['max']:.0f} / {r['derivcheck_ulps']['median']:.0f} |")
         else:
-            p(f"| {r['formula']} | {nn['median']:.2f} [{nn['min']:.2f}–{nn['max']:.2f}] | {dcv} | | | | "
+            w.writerow([r["formula"], "numpy", nn["median"]])
+            p(f"| {r['formula']} | {nn['median']:.2f} [{nn['min']:.2f}–{nn['max']:.2f}] | {dcv} | | | | | "
               f"{r['numpy_ulps']['max']:.0f} / {r['numpy_ulps']['median']:.0f} | |")
     atomic(os.path.join(charts, "peer_eval.csv"), out.getvalue())
     p()
-    p("Reading the misses: NumPy's whole-array loops are compiled C with SIMD, and on a CPU with"
-      " AVX-512 NumPy 1.24 also evaluates sin, acos and friends with vectorised SIMD routines, while the"
-      " evaluator (and the hand-written loop) call scalar libm for transcendental functions — so on the"
-      " acos/sin/sqrt formulas NumPy is faster than even hand-written C++. On the rational formulas the"
-      " evaluator interprets a register tape over blocks of 128 points, which costs 2–5x the"
-      " hand-written loop (target ≥ 50%); per-instruction dispatch and block loads/stores are the"
-      " overhead. The machine is shared by other jobs: medians move by up to 2x between runs (an earlier"
-      " run of the same command measured v1p_general at 2.5x NumPy), so read ratios near a target as"
-      " uncertain. The scene driver evaluates the spring's exact solution and stores a row at every"
-      " step, which is why its 1e-9 ratio is the lowest.")
+    missed = []
+    for r in rows:
+        if isinstance(r["derivcheck"], dict):
+            if r["ratio_vs_numpy"] < 2:
+                missed.append(f"{r['formula']} at {r['ratio_vs_numpy']:.2f}x NumPy (target 2x)")
+            if r.get("fraction_of_handwritten") is not None and r["fraction_of_handwritten"] < 0.6:
+                missed.append(f"{r['formula']} at {100 * r['fraction_of_handwritten']:.0f}% of hand-written (target 60%)")
+    p("Targets missed in this run: " + "; ".join(missed) + "." if missed else "All evaluation targets met in this run.")
+    p()
+    p("Reading the numbers: the JIT turns the formula's tape into one loop over <W x double> vectors"
+      " (numeric/jit.hpp), so the rational formulas run at the speed of straight-line SIMD code, where"
+      " the hand-written loop (compiled for baseline x86-64, SSE2) is limited to 2-wide vectors; on the"
+      " transcendental formulas SLEEF's vector acos/sin replace scalar libm calls. `deflection` is bound by"
+      " SLEEF's 1-ulp vector acos (about 2 ns per evaluation here, some 45 cycles per 8 lanes; the"
+      " arithmetic around it is a fifth of the time), while NumPy 1.24 has its own AVX-512 SIMD acos;"
+      " that is where the 2x target is closest or missed. The ulps columns are"
+      " dominated by ill-conditioned points (cancellation in the formula, not the evaluator): both"
+      " tools evaluate the same expression. The machine is shared by other jobs; interleaving the"
+      " repeats keeps the three tools under the same load, but medians still move between runs.")
     p()
 
     # --- scenes --------------------------------------------------------------------------------

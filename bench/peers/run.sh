@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The peers, side by side in one run (issue 5, part 3):
 #   1. `derivcheck check derivations/handout9/` vs the same claims in SymPy (process wall time);
-#   2. closed-form evaluation: SymPy lambdify + NumPy vs derivcheck's fast evaluator;
+#   2. closed-form evaluation: SymPy lambdify + NumPy vs derivcheck's default batch path (the
+#      JIT) vs hand-written C++, repeats interleaved, medians (docs/charts/peer_eval.csv:
+#      formula,tool,ns_per_eval_median);
 #   3. the scenes in SciPy solve_ivp (RK45, DOP853, LSODA) vs derivcheck's integrators at
 #      equal accuracy.
 # Writes docs/charts/peer_*.csv and the "Peers" section of docs/performance.md (between the
@@ -9,7 +11,8 @@
 # built yet print "not available yet" instead of a number.
 #
 # Usage:  bench/peers/run.sh [--quick] [--repeats N] [--points N] [--build-dir DIR]
-#   --quick      3 repeats, 200000 evaluation points (about a minute)
+#   --quick      3 repeats (7 for the cheap evaluation part), 200000 evaluation points
+#                (about a minute once derivcheck is built)
 #   --repeats N  timing repeats per measurement (default 5)
 #   --points N   evaluation points per formula (default 1000000)
 # Needs: tools/install-peers.sh (python3-sympy, python3-numpy, python3-scipy from Debian).
@@ -18,15 +21,16 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 BUILD="$ROOT/build-peers"
 REPEATS=5
+EVAL_REPEATS=""
 POINTS=1000000
 PY="${PYTHON:-/usr/bin/python3}"
 while [ $# -gt 0 ]; do
   case "$1" in
-    --quick) REPEATS=3; POINTS=200000 ;;
-    --repeats) REPEATS="$2"; shift ;;
+    --quick) REPEATS=3; EVAL_REPEATS=7; POINTS=200000 ;;
+    --repeats) REPEATS="$2"; EVAL_REPEATS="$2"; shift ;;
     --points) POINTS="$2"; shift ;;
     --build-dir) BUILD="$(cd "$ROOT" && realpath -m "$2")"; shift ;;
-    -h|--help) sed -n '2,18p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "run.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -53,7 +57,10 @@ HANDOUT="$ROOT/derivations/handout9"
 say "1/3 handout check vs SymPy ($REPEATS runs each)"
 "$PY" "$ROOT/bench/peers/peer_check.py" --cli "$CLI" --python "$PY" --repeats "$REPEATS" "$HANDOUT" > "$TMP/check.json"
 say "2/3 evaluator vs NumPy ($POINTS points)"
-"$PY" "$ROOT/bench/peers/peer_eval.py" --cli "$CLI" --n "$POINTS" --repeats "$REPEATS" --tmp "$TMP" \
+# NumPy is timed inside peer_eval.py: OPENBLAS_CORETYPE / OPENBLAS_L2_SIZE (set on some CI
+# machines) are unset for this command only.
+env -u OPENBLAS_CORETYPE -u OPENBLAS_L2_SIZE \
+"$PY" "$ROOT/bench/peers/peer_eval.py" --cli "$CLI" --n "$POINTS" --repeats "${EVAL_REPEATS:-$REPEATS}" --tmp "$TMP" \
   "$HANDOUT/05_direct_impact.dc:v1p_general" \
   "$HANDOUT/05_direct_impact.dc:energy_loss_general" \
   "$HANDOUT/06_ballistic_pendulum.dc:deflection" \
