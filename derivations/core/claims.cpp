@@ -340,9 +340,9 @@ class ClaimLine {
         return to_ginac(nodes.at(f), table_);
       } catch (const InputError& e) {
         throw LineError{"in field '" + f + "' (column " + std::to_string(e.pos().col) + "): " + e.message()};
-      } catch (const UndecidedLimit& e) {
-        throw LineError{"in field '" + f + "': " + e.what()};
       }
+      // an UndecidedLimit (a limit that does not exist or is infinite, an integral without a
+      // value) is no bad input: run()'s caller makes the claim undecided with the reason
     };
     if (kind == "equal") {
       std::optional<Verdict> iv;
@@ -737,6 +737,13 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
     return error(e.message);
   } catch (const InputError& e) {
     return error(e.message());
+  } catch (const UndecidedLimit& e) {
+    // a well-formed line whose limit or integral has no usable value (it does not exist, is
+    // infinite, or no method evaluates it): undecided with that reason
+    v = Verdict{};
+    v.kind = VerdictKind::Undecided;
+    v.method = "limit";
+    v.reason = e.what();
   } catch (const std::exception& e) {
     // The line is well formed (its errors are LineError / InputError above): a library failure
     // inside the computation leaves the claim undecided, with what failed, not an input error.

@@ -402,6 +402,15 @@ class Reader {
     try {
       (void)to_ginac(n, d_.symbols);
     } catch (const UndecidedLimit&) {
+    } catch (const InputError&) {
+      // Before definitions are put in, diff(p, v) of a defined p is 0 and a division by it an
+      // error: judge the expression as the rules will see it, with the definitions in force.
+      const Node r = resolve_definitions(d_, n);
+      if (to_text(r) == to_text(n)) throw;
+      try {
+        (void)to_ginac(r, d_.symbols);
+      } catch (const UndecidedLimit&) {
+      }
     }
   }
   // The GiNaC form, where a declaration needs it (an assumption's sides): an undecided limit
@@ -810,9 +819,10 @@ class Reader {
            lhs.length);
     }
     if (is_reserved_name(name)) fail(lhs.pos, "'" + name + "' is a reserved name and cannot be defined", lhs.length);
-    const Node& rhs = r.sides.back();
+    // `T = E1 = E2`: the first link defines T (definition_of); the others are checked claims
+    const Node& rhs = r.sides[1];
     std::vector<const Node*> ids;
-    collect_identifiers(rhs, ids);
+    for (std::size_t i = 1; i < r.sides.size(); ++i) collect_identifiers(r.sides[i], ids);
     for (const Node* id : ids)
       if (id->text == name) fail(id->pos, "the definition of '" + name + "' refers to itself", id->length);
     check_definition_cycle(name, rhs);
@@ -873,7 +883,7 @@ class Reader {
       if (it == by_name.end() || !done.insert(n).second) return false;
       path.push_back(it->second);
       std::vector<const Node*> ids;
-      collect_identifiers(it->second->claim.sides.back(), ids);
+      collect_identifiers(it->second->claim.sides[1], ids);
       for (const Node* id : ids)
         if (leads_back(id->text)) return true;
       path.pop_back();
@@ -1234,6 +1244,7 @@ class Reader {
 struct Definition {
   std::vector<std::string> params;
   const Node* body;
+  const Node* at_point = nullptr;   // the body for arguments other than the parameters, if different
 };
 
 bool defines_name(const Step& s) {
@@ -1242,10 +1253,33 @@ bool defines_name(const Step& s) {
 }
 
 Definition definition_of(const Step& s) {
-  // A named result `V(t) = E1 = E2` names E1: a wrong E2 is then reported at its own link.
-  Definition def{{}, s.names_result ? &s.claim.sides[1] : &s.claim.sides.back()};
+  // A named result `V(t) = E1 = E2` (and a definition written as a chain) names E1: a wrong E2
+  // is then reported at its own link. When E1 holds an integral, later steps use the last side:
+  // `W = integral(F, x, 0, L) = F0*L/2  by integrate` established that closed form, which the
+  // integral inside an expression may have no method to evaluate again.
+  std::function<bool(const Node&)> has_integral = [&](const Node& n) {
+    if (n.kind == NodeKind::Call && n.text == "integral") return true;
+    for (const auto& a : n.args)
+      if (has_integral(a)) return true;
+    return false;
+  };
+  // Likewise `v(t) = diff(x(t), t) = v0 - g*t`: v(0) cannot be diff(x(0), 0).
+  std::vector<std::string> params;
   if (s.claim.sides[0].kind == NodeKind::Call)
-    for (const auto& a : s.claim.sides[0].args) def.params.push_back(a.text);
+    for (const auto& a : s.claim.sides[0].args) params.push_back(a.text);
+  std::function<bool(const Node&)> diff_in_param = [&](const Node& n) {
+    if (n.kind == NodeKind::Call && n.text == "diff" && n.args.size() >= 2 && n.args[1].kind == NodeKind::Symbol &&
+        std::find(params.begin(), params.end(), n.args[1].text) != params.end())
+      return true;
+    for (const auto& a : n.args)
+      if (diff_in_param(a)) return true;
+    return false;
+  };
+  const bool chain = s.claim.sides.size() >= 3;
+  Definition def{params, chain && has_integral(s.claim.sides[1]) ? &s.claim.sides.back() : &s.claim.sides[1],
+                 nullptr};
+  // at a point (v(0)) a body that differentiates in the parameter is replaced by the last side
+  if (chain && diff_in_param(*def.body)) def.at_point = &s.claim.sides.back();
   return def;
 }
 
@@ -1308,8 +1342,13 @@ Node resolve(const Node& n, const Definitions& defs, int depth) {
     auto def = defs.find(n.text);
     if (def && !def->params.empty() && def->params.size() == out.args.size()) {
       std::map<std::string, const Node*> args;
-      for (std::size_t i = 0; i < out.args.size(); ++i) args[def->params[i]] = &out.args[i];
-      Node r = resolve(substitute_params(*def->body, args), defs, depth + 1);
+      bool at_params = true;
+      for (std::size_t i = 0; i < out.args.size(); ++i) {
+        args[def->params[i]] = &out.args[i];
+        at_params = at_params && out.args[i].kind == NodeKind::Symbol && out.args[i].text == def->params[i];
+      }
+      const Node& body = !at_params && def->at_point ? *def->at_point : *def->body;
+      Node r = resolve(substitute_params(body, args), defs, depth + 1);
       r.parenthesized = true;
       r.pos = n.pos;
       return r;

@@ -47,15 +47,12 @@ thread_local std::string improper_note_;   // why by_antiderivative gave no verd
 
 // integral(f, x, a, b) = G through an antiderivative (derivations/integrals/definite.hpp):
 // proved or refuted by comparing its value with G; refuted when it diverges or does not exist.
+// x is the fresh variable of integration of `bound` (integrand_of); G lives in `table`.
 std::optional<Verdict> by_antiderivative(const ex& f, const GiNaC::symbol& x, const ex& a, int a_inf, const ex& b,
-                                         int b_inf, const ex& G, const SymbolTable& table, const ProveOptions& opt) {
+                                         int b_inf, const ex& G, const SymbolTable& bound, const SymbolTable& table,
+                                         const ProveOptions& opt) {
   improper_note_.clear();
-  const SymbolInfo* info = table.find(x);
-  if (info && info->domain.kind == Domain::Kind::Positive && (a_inf || !(GiNaC::is_a<GiNaC::numeric>(a) && GiNaC::ex_to<GiNaC::numeric>(a) >= 0))) {
-    improper_note_ = "the variable of integration is declared positive but the range reaches below 0";
-    return std::nullopt;
-  }
-  const integrals::Definite d = integrals::definite_integral(f, x, a, a_inf, b, b_inf, table);
+  const integrals::Definite d = integrals::definite_integral(f, x, a, a_inf, b, b_inf, bound);
   using K = integrals::Definite::Kind;
   if (d.kind == K::Unknown) {
     improper_note_ = d.why;
@@ -148,18 +145,15 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
   const int a_inf = infinity_sign(integral->args[2]), b_inf = infinity_sign(integral->args[3]);
   if (a_inf > 0 || b_inf < 0)
     return undecided_because("an integral from oo or to -oo: write it with the limits the other way round");
-  const ex f = to_ginac(integral->args[0], table);
-  const ex xe = to_ginac(integral->args[1], table);
-  if (!GiNaC::is_a<GiNaC::symbol>(xe))
-    throw InputError(integral->args[1].pos, "the variable of integration must be a symbol", integral->args[1].length);
-  const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(xe);
+  // f in a fresh variable of integration: x ranges over (a, b), whatever is declared of x
+  const Integrand in = integrand_of(*integral, table);
+  const ex& f = in.f;
+  const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(in.x);
   const ex a = a_inf ? ex(0) : to_ginac(integral->args[2], table);
   const ex b = b_inf ? ex(0) : to_ginac(integral->args[3], table);
-  if (a.has(x) || b.has(x))
-    throw InputError(integral->pos, "a limit of integration contains the variable of integration", integral->length);
   const ex G = to_ginac(*other, table);
   if (a_inf || b_inf) {
-    if (auto v = by_antiderivative(f, x, a, a_inf, b, b_inf, G, table, opt)) return *v;
+    if (auto v = by_antiderivative(f, x, a, a_inf, b, b_inf, G, in.table, table, opt)) return *v;
     return undecided_because("improper integral: " + improper_note_);
   }
 
@@ -206,7 +200,7 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
   }
 
   // 3. An antiderivative found by rules and proved by differentiation, continuity on (a, b).
-  if (auto v = by_antiderivative(f, x, a, 0, b, 0, G, table, opt)) return *v;
+  if (auto v = by_antiderivative(f, x, a, 0, b, 0, G, in.table, table, opt)) return *v;
 
   // 4. Rigorous quadrature at sampled parameter values.
   Verdict v = kernel::probe_definite_integral(f, x, a, b, G, table, opt);

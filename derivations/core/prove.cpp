@@ -255,6 +255,8 @@ void collect_conditions(const ex& e, std::vector<RawCond>& out) {
     return;
   }
   if (is_fn(e, "log")) out.push_back({CondKind::Positive, e.op(0), "log argument"});
+  // tan(u) = sin(u)/cos(u): a pole where cos(u) = 0 (constants such as tan(1) need nothing)
+  if (is_fn(e, "tan") && !GiNaC::is_a<numeric>(e.op(0).evalf())) out.push_back({CondKind::Nonzero, GiNaC::cos(e.op(0)), "tan pole"});
   if (is_fn(e, "acos")) out.push_back({CondKind::UnitInterval, e.op(0), "acos argument"});
   if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
 }
@@ -667,7 +669,32 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 
 std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx) {
   GiNaC::lst parts;
-  std::function<void(const Node&)> walk = [&](const Node& m) {
+  std::function<void(const Node&)> walk;
+  std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
+    if (m.kind == NodeKind::Symbol && m.text == x) return true;
+    for (const auto& a : m.args)
+      if (mentions(a, x)) return true;
+    return false;
+  };
+  // Inside limit(f, x, p) and integral(f, x, a, b) the variable is bound: x ranges near p or
+  // over (a, b), not over the domain declared for the quantity x. Only the parts of f free of x
+  // carry conditions of the claim (the limit engine and the integral's methods answer for the
+  // rest); the point and the limits of integration carry their own.
+  std::function<void(const Node&, const std::string&)> free_parts = [&](const Node& m, const std::string& x) {
+    if (!mentions(m, x)) return walk(m);
+    for (const auto& a : m.args) free_parts(a, x);
+  };
+  walk = [&](const Node& m) {
+    const bool binds = m.kind == NodeKind::Call && ((m.text == "limit" && m.args.size() == 3) ||
+                                                    (m.text == "integral" && m.args.size() == 4)) &&
+                       m.args[1].kind == NodeKind::Symbol;
+    if (binds) {
+      for (std::size_t i = 2; i < m.args.size(); ++i) {
+        const Node& a = m.args[i].kind == NodeKind::Neg ? m.args[i].args[0] : m.args[i];
+        if (!(a.kind == NodeKind::Symbol && a.text == "oo")) walk(m.args[i]);
+      }
+      return free_parts(m.args[0], m.args[1].text);
+    }
     for (const auto& a : m.args) walk(a);
     bool calculus = m.kind == NodeKind::Call && (m.text == "integral" || m.text == "diff" || m.text == "limit");
     if (calculus || !(m.kind == NodeKind::Call || m.kind == NodeKind::Pow || m.kind == NodeKind::Div)) return;

@@ -210,6 +210,23 @@ const SymbolInfo& SymbolTable::declare(SymbolInfo info) {
   return symbols_.back();
 }
 
+SymbolTable SymbolTable::with_bound_variable(const std::string& name) const {
+  SymbolTable t = *this;
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) return t;
+  SymbolInfo& info = t.symbols_[it->second];
+  if (info.is_function) return t;
+  const GiNaC::ex old = info.sym;
+  info.sym = GiNaC::realsymbol(name);
+  info.domain = Domain::real();
+  // relations assumed of the declared quantity say nothing about the dummy variable
+  std::vector<Constraint> kept;
+  for (const auto& c : t.constraints_)
+    if (!c.lhs.has(old) && !c.rhs.has(old)) kept.push_back(c);
+  t.constraints_ = std::move(kept);
+  return t;
+}
+
 const SymbolInfo* SymbolTable::find(const std::string& name) const {
   auto it = by_name_.find(name);
   return it == by_name_.end() ? nullptr : &symbols_[it->second];

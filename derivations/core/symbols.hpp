@@ -81,6 +81,10 @@ class SymbolTable {
   // declaration would make a refuted claim hold. Returns false for an unknown name.
   bool narrow_domain(const std::string& name, const Domain& d);
   const std::vector<Constraint>& constraints() const { return constraints_; }
+  // A copy in which `name` is a fresh real symbol without domain or assumed relations: the
+  // dummy variable of an integral, which must not inherit what is declared of the quantity of
+  // the same name (abs(x) = x for a declared positive x would be wrong over (-1, 1)).
+  SymbolTable with_bound_variable(const std::string& name) const;
   // Abstract function applications (v(t)) are GiNaC functions from a fixed pool; this maps a
   // declared function name to its pool index.
   int function_index(const std::string& name) const;
@@ -105,9 +109,20 @@ struct UndecidedLimit : std::runtime_error {
 // exponent too large (|n| > 1000 for a symbolic base; a numeric power whose result would have
 // more than 10000 digits), 'oo' outside a limit point.
 // Calculus forms: diff(f,x[,n]) is carried out; limit(f,x,p) is evaluated with the limit
-// helper (an unevaluable limit throws UndecidedLimit); integral(f,x,a,b) cannot be converted
-// (throws InputError: the 'integrate' rule handles integral(...) on the author's tree).
+// helper (an unevaluable limit throws UndecidedLimit); integral(f,x,a,b) is evaluated where a
+// method applies (polynomial integrand, proved antiderivative), else UndecidedLimit.
 GiNaC::ex to_ginac(const Node& n, const SymbolTable& table);
+
+// The integrand of integral(f, x, a, b), converted with x as a fresh real variable of
+// integration (SymbolTable::with_bound_variable): the dummy variable ranges over (a, b), not
+// over what is declared of the quantity of the same name. `x` is that fresh symbol and `table`
+// the table it belongs to (a copy of the caller's with x rebound). Throws InputError when the
+// second argument is not a declared symbol, or a limit of integration contains it.
+struct Integrand {
+  SymbolTable table;
+  GiNaC::ex f, x;
+};
+Integrand integrand_of(const Node& integral, const SymbolTable& table);
 
 // The dimension of an expression; throws InputError at the first inconsistent node, e.g.
 // "cannot add kg·m/s and kg·m²/s²" at the '+'. Symbols without a declared dimension

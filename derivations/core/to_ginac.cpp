@@ -202,23 +202,23 @@ class Converter {
  private:
   static bool is_integral_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "integral"; }
 
-  // The parts of integral(f, t, a, b): f, t (a symbol, held by ex), a, b.
+  // The parts of integral(f, t, a, b): f in the fresh variable of integration t (integrand_of),
+  // the table t belongs to, a, b.
   struct IntegralParts {
+    SymbolTable bound;
     GiNaC::ex f, t, a, b;
     int a_inf = 0, b_inf = 0;   // -1 / +1: that limit of integration is -oo / oo (a, b are 0 then)
   };
   IntegralParts integral_parts(const Node& n) {
     check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
-    const SymbolInfo& x = variable_arg(n, n.args[1], table_);
+    variable_arg(n, n.args[1], table_);
     const int a_inf = infinity_sign(n.args[2]), b_inf = infinity_sign(n.args[3]);
     if (a_inf > 0 || b_inf < 0)
       throw UndecidedLimit("'" + short_text(n) + "': an integral from oo or to -oo; write it with the limits the other way round",
                            n.pos);
-    IntegralParts p{conv(n.args[0]), x.sym, a_inf ? GiNaC::ex(0) : conv(n.args[2]), b_inf ? GiNaC::ex(0) : conv(n.args[3]),
-                    a_inf, b_inf};
-    if (p.a.has(p.t) || p.b.has(p.t))
-      throw InputError(n.pos, "a limit of integration contains the variable of integration", n.length);
-    return p;
+    Integrand in = integrand_of(n, table_);
+    return IntegralParts{std::move(in.table), in.f, in.x, a_inf ? GiNaC::ex(0) : conv(n.args[2]),
+                         b_inf ? GiNaC::ex(0) : conv(n.args[3]), a_inf, b_inf};
   }
 
   // A definite integral inside an expression: a polynomial integrand on a finite interval exactly
@@ -235,7 +235,7 @@ class Converter {
       if (!residual) return v;
     }
     const integrals::Definite d =
-        integrals::definite_integral(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, table_);
+        integrals::definite_integral(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, p.bound);
     using K = integrals::Definite::Kind;
     if (d.kind == K::Value) return d.value;
     if (d.kind == K::Diverges)
@@ -418,11 +418,12 @@ class Converter {
         throw UndecidedLimit("the limit helper could not evaluate '" + short_text(n) + "'", n.pos);
       }
       if (!r.ok) throw UndecidedLimit(r.reason.empty() ? "limit undecided" : r.reason, n.pos);
+      // not an input error: `limit(1/(1 - x), x, 1) = oo  by limit x -> 1` is a true claim the
+      // limit rule checks; as a value inside an expression it leaves the claim undecided
       if (r.infinite != 0)
-        throw InputError(n.pos,
-                         "'" + short_text(n) + "' is " + (r.infinite > 0 ? "+" : "-") +
-                             "infinity and cannot be used as a value",
-                         n.length);
+        throw UndecidedLimit("'" + short_text(n) + "' is " + (r.infinite > 0 ? "+" : "-") +
+                                 "infinity and cannot be used as a value",
+                             n.pos);
       return r.value;
     }
     if (f == "integral") return integral_value(n, integral_parts(n));
@@ -643,6 +644,18 @@ class Dimensioner {
 }  // namespace
 
 GiNaC::ex to_ginac(const Node& n, const SymbolTable& table) { return Converter(table).conv(n); }
+
+Integrand integrand_of(const Node& n, const SymbolTable& table) {
+  check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
+  const SymbolInfo& x = variable_arg(n, n.args[1], table);
+  for (int i : {2, 3})
+    if (infinity_sign(n.args[i]) == 0 && Converter(table).conv(n.args[i]).has(x.sym))
+      throw InputError(n.pos, "a limit of integration contains the variable of integration", n.length);
+  Integrand out{table.with_bound_variable(x.name), GiNaC::ex(), GiNaC::ex()};
+  out.x = out.table.find(x.name)->sym;
+  out.f = Converter(out.table).conv(n.args[0]);
+  return out;
+}
 
 Dimension dimension_of(const Node& n, const SymbolTable& table) { return Dimensioner(table).dim(n); }
 

@@ -100,7 +100,9 @@ bool collect(const ex& e, const symbol& x, std::vector<Condition>& out) {
       const ex& n = s.op(1);
       if (is_a<numeric>(n) && ex_to<numeric>(n).is_integer()) {
         if (ex_to<numeric>(n) < 0) out.push_back({s.op(0), false});
-      } else if (s.op(0).has(x) || n.has(x)) {
+      } else if (s.op(0).has(x) || n.has(x) || (is_a<numeric>(n) && ex_to<numeric>(n) < 0)) {
+        // (free of x too when it divides: a/sqrt(a^2) needs a != 0 -- the antiderivative
+        // atan(x/sqrt(a^2)) of a/(a^2 + x^2) is no antiderivative at a = 0)
         if (!s.op(0).is_equal(exp(1))) out.push_back({s.op(0), true});
       }
     } else if (is_a<function>(s)) {

@@ -182,7 +182,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
   const int need = std::max(1, opt.probe_points);
   int agreed = 0, attempts = 0, unusable = 0, integral_failures = 0;
   double max_rel = 0;
-  std::string why;
+  std::string why, failed_at;
   for (; attempts < need * 20 && agreed < need; ++attempts) {
     bool admissible = false;
     GiNaC::exmap p = sampler.draw(rng, attempts % 6 == 5 ? 1 : 0, &admissible);
@@ -238,7 +238,23 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
     }
     ++unusable;
     if (why.empty()) why = c.why;
+    if (integral_unknown && integral_failures == 0) {
+      for (const auto& [name, value] : sampler.describe(p))
+        if (name != "dc_quadrature_dummy") failed_at += (failed_at.empty() ? "" : ", ") + name + " = " + value;
+    }
     if (integral_unknown && ++integral_failures >= 3 && agreed == 0) break;
+  }
+  // An admissible point where the integral could not be enclosed (a singularity on the path:
+  // the integral may diverge there) means the closed form is not shown to hold on the whole
+  // domain, however many other points agree.
+  if (integral_failures > 0) {
+    v.kind = VerdictKind::Undecided;
+    v.reason = "rigorous quadrature could not enclose the integral at an admissible point" +
+               (failed_at.empty() ? std::string() : " (" + failed_at + ")") +
+               ": it may diverge there (a singularity on the path of integration)" + (why.empty() ? "" : "; " + why) +
+               (agreed ? "; " + std::to_string(agreed) + " other points agree" : "");
+    v.detail = v.reason;
+    return v;
   }
   if (agreed >= need) {
     v.kind = VerdictKind::HoldsNumerically;

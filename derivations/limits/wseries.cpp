@@ -181,6 +181,12 @@ WSeries SeriesExpander::split_lead(const WSeries& s, ex& c0, ex& e0) {
 
 WSeries SeriesExpander::inverse(WSeries s) {
   if (!settle_lead(s)) throw Undecided("a division by an expression that vanishes identically near the point");
+  // 1/s divides by the leading coefficient, so it must be nonzero for every parameter value the
+  // declarations allow, not only generically: (a*x + 1)/(a*x + 2) -> 1 as x -> oo holds for
+  // a != 0 only. Deciding its sign shows that (eventual_sign throws when the declarations do
+  // not determine it).
+  if (o_.eventual_sign(s.terms[0].coeff) == 0)
+    throw Undecided("a division by an expression whose leading coefficient vanishes");
   ex c0, e0;
   WSeries r = split_lead(s, c0, e0);
   WSeries g = compose([](int k) { return ex(k % 2 ? -1 : 1); }, r);
@@ -277,6 +283,10 @@ WSeries SeriesExpander::function_of(const ex& e, WSeries s) {
     s.terms.erase(s.terms.begin());
   }
   if (diverges) {
+    // the argument diverges for every parameter value only if its leading coefficient is
+    // nonzero for all of them (sin(a*x) tends to 0 for a = 0)
+    if (o_.eventual_sign(s.terms[0].coeff) == 0)
+      throw Undecided("the leading coefficient of " + name + "'s argument vanishes");
     if (name == "sin" || name == "cos" || name == "tan") throw Oscillates(e);
     if (name == "asin" || name == "acos")
       throw NotRealNear(name + " of a quantity that tends to infinity has no real value");

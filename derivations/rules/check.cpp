@@ -75,63 +75,38 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
   }
 }
 
-// Side conditions of the claim's sides (an integral's own variable and bounds excluded).
+// Side conditions of the claim's sides (not of what an integral's or a limit's bound variable needs).
 void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
   try {
-    // A limit or series claim is about x near the point only (`x*log(x) = 0  by limit x -> 0+`,
-    // `log(sin(x)) = log(x) - x^2/6  by series x -> 0+ to order 4`): the conditions of parts
-    // that involve x are not claims about x's whole domain (the limit engine decides where the
-    // expressions are real near the point); the conditions of parts free of x are.
     const bool asymptotic = (s.rule.name == "limit" || s.rule.name == "series") && s.rule.var;
+    auto add = [&](const Node& m) {
+      for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
+        bool dup = false;
+        for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
+        if (!dup) res.verdict.side_conditions.push_back(sc);
+      }
+    };
+    std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
+      if (m.kind == NodeKind::Symbol && m.text == x) return true;
+      for (const auto& a : m.args)
+        if (mentions(a, x)) return true;
+      return false;
+    };
+    // (side_conditions_of_tree leaves out what an integral's or a limit's bound variable needs)
+    std::function<void(const Node&, const std::string&)> free_parts = [&](const Node& m, const std::string& x) {
+      if (!mentions(m, x)) return add(m);
+      for (const auto& a : m.args) free_parts(a, x);
+    };
     for (std::size_t si = 0; si < claim.sides.size(); ++si) {
       const Node& side = claim.sides[si];
       if (limit_value_side(s, side, d.symbols)) continue;
       Node n = resolve_definitions(d, side);
-      if (asymptotic) {
-        const std::string& x = s.rule.var->label;
-        std::function<bool(const Node&)> mentions = [&](const Node& m) {
-          if (m.kind == NodeKind::Symbol && m.text == x) return true;
-          for (const auto& a : m.args)
-            if (mentions(a)) return true;
-          return false;
-        };
-        std::function<void(const Node&)> free_parts = [&](const Node& m) {
-          if (!mentions(m)) {
-            for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
-              bool dup = false;
-              for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
-              if (!dup) res.verdict.side_conditions.push_back(sc);
-            }
-            return;
-          }
-          for (const auto& a : m.args) free_parts(a);
-        };
-        free_parts(n);
-        continue;
-      }
-      std::function<void(const Node&)> walk = [&](const Node& m) {
-        if (m.kind == NodeKind::Call && m.text == "integral") {
-          for (const auto& a : m.args) walk(a);
-          return;
-        }
-        for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
-          bool dup = false;
-          for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
-          if (!dup) res.verdict.side_conditions.push_back(sc);
-        }
-      };
-      bool has_integral = false;
-      std::function<void(const Node&)> find = [&](const Node& m) {
-        if (m.kind == NodeKind::Call && m.text == "integral") has_integral = true;
-        for (const auto& a : m.args) find(a);
-      };
-      find(n);
-      if (has_integral) {
-        for (const auto& a : n.args) walk(a);
-        if (n.kind == NodeKind::Call && n.text == "integral") continue;
-      } else {
-        walk(n);
-      }
+      // A limit or series claim is about x near the point only (`x*log(x) = 0  by limit x -> 0+`,
+      // `log(sin(x)) = log(x) - x^2/6  by series x -> 0+ to order 4`): the conditions of parts
+      // that involve x are not claims about x's whole domain (the limit engine decides where the
+      // expressions are real near the point); the conditions of parts free of x are.
+      if (asymptotic) free_parts(n, s.rule.var->label);
+      else add(n);
     }
   } catch (const std::exception&) {
     // conversion problems were reported by the rule already
@@ -192,7 +167,8 @@ void CheckSummary::add(StepResult r) {
   const Step& s = *r.step;
   std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
   if (r.erratum_reported) ++errata;
-  r.premise = s.rule.name == "given" || s.rule.name == "definition";
+  // a definition written as a chain (`T = E1 = E2`) also claims E1 = E2: not a premise
+  r.premise = s.rule.name == "given" || (s.rule.name == "definition" && s.claim.sides.size() <= 2);
   if (r.input_error) ++input_errors;
   if (own_errors > 0) ++errors;
   else if (r.premise && r.verdict.holds()) ++premises;

@@ -168,8 +168,25 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
       }
       const Candidate* pick = nullptr;
       std::vector<Candidate> cands = candidates(c, num, c.atoms(eqs[idx].hint), t, preferred, only_preferred);
+      // The earlier eliminations and the target with the pick put in. A pick that makes one of
+      // their denominators vanish identically (x' = .../(m x'' + k x), then m x'' + k x = 0
+      // from Newton's law) is skipped for the next candidate, not a failed derivation.
+      std::vector<Elimination> updated;
+      ex t_updated;
       for (const auto& k : cands) {
         if (banned.count({idx, k.key}) || !nonzero_coefficient(c, k.coef)) continue;
+        try {
+          updated = red.eliminated;
+          for (auto& el : updated) {
+            if (!el.value.has(k.var) && !el.coef.has(k.var)) continue;
+            el.value = el.value.subs(k.var == k.value, GiNaC::subs_options::no_pattern);
+            el.coef = el.coef.subs(k.var == k.value, GiNaC::subs_options::no_pattern);
+            merge_sources(el.sources, sources);
+          }
+          t_updated = t.subs(k.var == k.value, GiNaC::subs_options::no_pattern);
+        } catch (const std::exception&) {
+          continue;
+        }
         pick = &k;
         break;
       }
@@ -178,15 +195,10 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
         retry.push_back(idx);
         continue;
       }
-      for (auto& el : red.eliminated) {
-        if (!el.value.has(pick->var) && !el.coef.has(pick->var)) continue;
-        el.value = el.value.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
-        el.coef = el.coef.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
-        merge_sources(el.sources, sources);
-      }
+      red.eliminated = std::move(updated);
       red.eliminated.push_back({pick->var, pick->value, pick->coef, pick->coef, pick->is_function, idx, pick->key,
                                 sources});
-      t = t.subs(pick->var == pick->value, GiNaC::subs_options::no_pattern);
+      t = t_updated;
     }
     pending = std::move(retry);
     if (red.eliminated.size() == before) break;

@@ -53,9 +53,31 @@ void application_args(const ex& e, std::vector<ex>& out) {
 // An equation between function applications of one parameter s (p(t) = m*v(t)) holds for
 // every value of s: add its instances at the other arguments the claim uses (t1, t2). An
 // equation without applications is between plain symbols, each one value: it is used as is.
+// Is every function application in e at its function's declared parameter s (v(t) for a
+// function declared v(t))? Only such an equation holds for every s: y(T) = 0 at the landing
+// time T says nothing about y(t).
+bool at_declared_parameter(const StepContext& c, const ex& e, const ex& s) {
+  const int k = pool_function_index(e);
+  if (k >= 0 && e.nops() >= 1) {
+    for (const auto& info : c.d.symbols.all())
+      if (info.is_function && c.d.symbols.function_index(info.name) == k) {
+        if (info.params.size() != 1) return false;
+        const SymbolInfo* p = c.d.symbols.find(info.params[0]);
+        return p && p->sym.is_equal(s);
+      }
+    return false;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (!at_declared_parameter(c, e.op(i), s)) return false;
+  return true;
+}
+
 std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, const ex& claim) {
+  // the points: where the claim and the references apply the functions (x0 = A cos(phi) from
+  // x(0) = x0 and x(t) = A cos(omega t + phi) needs the latter at t = 0)
   std::vector<ex> want;
   application_args(claim, want);
+  for (const auto& q : eqs) application_args(q.e, want);
   std::sort(want.begin(), want.end(), [&](const ex& x, const ex& y) { return c.text(x) < c.text(y); });
   std::vector<Eq> out = eqs;
   if (want.empty()) return out;
@@ -70,7 +92,7 @@ std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, co
   for (const auto& q : eqs) {
     std::vector<ex> args;
     application_args(q.e, args);
-    if (args.size() != 1 || !GiNaC::is_a<GiNaC::symbol>(args[0])) continue;
+    if (args.size() != 1 || !GiNaC::is_a<GiNaC::symbol>(args[0]) || !at_declared_parameter(c, q.e, args[0])) continue;
     const GiNaC::symbol& s = GiNaC::ex_to<GiNaC::symbol>(args[0]);
     // it holds for every s, so its derivative in s holds too (p(t) = m v(t) gives p' = m v')
     std::vector<ex> forms{q.e};

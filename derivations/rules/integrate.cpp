@@ -29,15 +29,17 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
                           const std::vector<Eq>& ref_eqs) {
   const SymbolTable& symbols = c.d.symbols;
   if (side0.args.size() != 4) c.fail(side0.pos, "expected integral(f, x, a, b)", side0.length);
-  ex f = to_ginac(side0.args[0], symbols);
-  ex x = to_ginac(side0.args[1], symbols);
+  if (!to_ginac(side0.args[1], symbols).is_equal(t))
+    c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
+  // the integrand in a fresh variable of integration (it ranges over (a, b), not over the domain
+  // declared for the quantity of the same name); the references speak of it at b and a only
+  const Integrand in = integrand_of(side0, symbols);
+  const ex f = in.f, x = in.x;
   ex a = to_ginac(side0.args[2], symbols);
   ex b = to_ginac(side0.args[3], symbols);
   if (!GiNaC::is_a<GiNaC::symbol>(b))
     c.fail(side0.args[3].pos, "the upper limit of the integral must be a symbol (it is differentiated)",
            side0.args[3].length);
-  if (!x.is_equal(t))
-    c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
   if (claim.sides.size() < 2) c.fail(c.s.claim_pos, "expected 'integral(f, x, a, b) = G'");
   std::vector<Eq> eqs = at_points(ref_eqs, t, {b, a});
   const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
@@ -45,7 +47,7 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
   // The derivative test needs the integrand continuous in x and every claimed closed form
   // continuous in b (a G that jumps, such as atan(1/b) + atan(b), has the right derivative
   // wherever it is defined).
-  bool continuous = continuous_everywhere(f, GiNaC::ex_to<GiNaC::symbol>(t));
+  bool continuous = continuous_everywhere(f, GiNaC::ex_to<GiNaC::symbol>(x));
   for (std::size_t i = 1; i < claim.sides.size() && continuous; ++i)
     continuous = continuous_everywhere(c.conv(claim.sides[i]), GiNaC::ex_to<GiNaC::symbol>(b));
   if (f.has(b) || !continuous) {
@@ -62,7 +64,7 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
     for (std::size_t i = 1; i < claim.sides.size(); ++i) {
       ex G = c.conv(claim.sides[i]);
       refs_independent = refs_independent && !detail::has_abstract_application(G);
-      Verdict v = kernel::probe_definite_integral(f, GiNaC::ex_to<GiNaC::symbol>(t), a, b, G, symbols, c.opt);
+      Verdict v = kernel::probe_definite_integral(f, GiNaC::ex_to<GiNaC::symbol>(x), a, b, G, symbols, c.opt);
       if (v.kind == VerdictKind::Refuted && !refs_independent)
         v = undecided("rigorous quadrature", "the quadrature differs from the closed form at a point that need not "
                                              "satisfy the references");
