@@ -749,12 +749,13 @@ class Reader {
     if (used_names_.count(n.text)) return false;
     const SymbolInfo* info = d_.symbols.find(n.text);
     if (!info) return false;
-    // Only an unconstrained quantity can be named: `symbol W : positive` and `W = -1 = -1`
-    // must stay a refuted claim, not a definition.
-    if (info->domain.kind != Domain::Kind::Real) return false;
+    // A quantity named in an assumption cannot be named (`assume W < E` would say nothing of
+    // the value). A declared domain can: the step then also claims that the value lies in it
+    // (check.cpp), so `symbol W : positive` and `W = -1 = -1` stay refuted.
     for (const auto& c : d_.symbols.constraints())
       if (c.lhs.has(info->sym) || c.rhs.has(info->sym)) return false;
     if (n.kind == NodeKind::Symbol) return !info->is_function;
+    if (info->domain.kind != Domain::Kind::Real) return false;
     if (n.kind != NodeKind::Call || !info->is_function || n.args.size() != info->params.size()) return false;
     for (std::size_t i = 0; i < n.args.size(); ++i)
       if (n.args[i].kind != NodeKind::Symbol || n.args[i].text != info->params[i]) return false;
@@ -1252,13 +1253,14 @@ bool defines_name(const Step& s) {
          (s.claim.sides[0].kind == NodeKind::Call || s.claim.sides[0].kind == NodeKind::Symbol);
 }
 
-Definition definition_of(const Step& s) {
+Definition definition_of(const Derivation& d, const Step& s) {
   // A named result `V(t) = E1 = E2` (and a definition written as a chain) names E1: a wrong E2
   // is then reported at its own link. When E1 holds an integral, later steps use the last side:
   // `W = integral(F, x, 0, L) = F0*L/2  by integrate` established that closed form, which the
   // integral inside an expression may have no method to evaluate again.
+  // (also a limit: `v_T = limit(v(t), t, oo) = m*g/b  by limit t -> oo of solution`)
   std::function<bool(const Node&)> has_integral = [&](const Node& n) {
-    if (n.kind == NodeKind::Call && n.text == "integral") return true;
+    if (n.kind == NodeKind::Call && (n.text == "integral" || n.text == "limit")) return true;
     for (const auto& a : n.args)
       if (has_integral(a)) return true;
     return false;
@@ -1275,9 +1277,24 @@ Definition definition_of(const Step& s) {
       if (diff_in_param(a)) return true;
     return false;
   };
+  // And `R = x(T) = v0^2*sin(2*theta)/g`: x(T), a declared function at a point, is one value
+  // independent of theta to the algebra; the closed form keeps what the step established.
+  std::function<bool(const Node&)> at_a_point = [&](const Node& n) {
+    if (n.kind == NodeKind::Call && !is_builtin_function(n.text)) {
+      const SymbolInfo* f = d.symbols.find(n.text);
+      if (f && f->is_function) {
+        if (n.args.size() != f->params.size()) return true;
+        for (std::size_t i = 0; i < n.args.size(); ++i)
+          if (n.args[i].kind != NodeKind::Symbol || n.args[i].text != f->params[i]) return true;
+      }
+    }
+    for (const auto& a : n.args)
+      if (at_a_point(a)) return true;
+    return false;
+  };
   const bool chain = s.claim.sides.size() >= 3;
-  Definition def{params, chain && has_integral(s.claim.sides[1]) ? &s.claim.sides.back() : &s.claim.sides[1],
-                 nullptr};
+  const bool use_last = chain && (has_integral(s.claim.sides[1]) || at_a_point(s.claim.sides[1]));
+  Definition def{params, use_last ? &s.claim.sides.back() : &s.claim.sides[1], nullptr};
   // at a point (v(0)) a body that differentiates in the parameter is replaced by the last side
   if (chain && diff_in_param(*def.body)) def.at_point = &s.claim.sides.back();
   return def;
@@ -1290,14 +1307,14 @@ class Definitions {
   explicit Definitions(const Derivation& d) : d_(d) {
     if (!d.indexed)
       for (const auto& s : d.steps)
-        if (defines_name(s)) local_[s.claim.sides[0].text] = definition_of(s);
+        if (defines_name(s)) local_[s.claim.sides[0].text] = definition_of(d, s);
   }
   bool empty() const { return d_.indexed ? d_.definition_index.empty() : local_.empty(); }
   std::optional<Definition> find(const std::string& name) const {
     if (d_.indexed) {
       auto it = d_.definition_index.find(name);
       if (it == d_.definition_index.end()) return std::nullopt;
-      return definition_of(d_.steps[it->second]);
+      return definition_of(d_, d_.steps[it->second]);
     }
     auto it = local_.find(name);
     if (it == local_.end()) return std::nullopt;

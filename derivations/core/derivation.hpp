@@ -80,6 +80,7 @@ struct ProsePiece {
   enum class Kind { Text, Math, Expr, Emph } kind = Kind::Text;
   std::string text;          // Text/Emph: plain text; Math: TeX between $...$; Expr: as written
   Node expr;                 // Expr: `m1*v1 + m2*v2`, typeset with the file's symbols
+  std::vector<Node> more;    // Expr written as an equation `beta = v/c`: the sides after expr
 };
 struct Prose {
   enum class Kind { Heading, Paragraph, Remark, Figure } kind = Kind::Paragraph;

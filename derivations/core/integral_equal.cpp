@@ -142,18 +142,26 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
   if (!integral) return integrals_in_expressions(lhs, rhs, table, opt);
   if (integral->args.size() != 4)
     throw InputError(integral->pos, "expected integral(f, x, a, b): 4 arguments", integral->length);
-  const int a_inf = infinity_sign(integral->args[2]), b_inf = infinity_sign(integral->args[3]);
-  if (a_inf > 0 || b_inf < 0)
-    return undecided_because("an integral from oo or to -oo: write it with the limits the other way round");
+  int a_inf = infinity_sign(integral->args[2]), b_inf = infinity_sign(integral->args[3]);
+  if (a_inf != 0 && a_inf == b_inf) return undecided_because("both limits of integration are infinite on the same side");
   // f in a fresh variable of integration: x ranges over (a, b), whatever is declared of x
   const Integrand in = integrand_of(*integral, table);
   const ex& f = in.f;
   const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(in.x);
-  const ex a = a_inf ? ex(0) : to_ginac(integral->args[2], table);
-  const ex b = b_inf ? ex(0) : to_ginac(integral->args[3], table);
-  const ex G = to_ginac(*other, table);
+  ex a = a_inf ? ex(0) : to_ginac(integral->args[2], table);
+  ex b = b_inf ? ex(0) : to_ginac(integral->args[3], table);
+  ex G = to_ginac(*other, table);
+  const bool exchanged = a_inf > 0 || b_inf < 0;
+  if (exchanged) {   // from oo (or to -oo): integral(f, x, oo, r) = G is integral(f, x, r, oo) = -G
+    std::swap(a, b);
+    std::swap(a_inf, b_inf);
+    G = -G;
+  }
   if (a_inf || b_inf) {
-    if (auto v = by_antiderivative(f, x, a, a_inf, b, b_inf, G, in.table, table, opt)) return *v;
+    if (auto v = by_antiderivative(f, x, a, a_inf, b, b_inf, G, in.table, table, opt)) {
+      if (exchanged) v->method = "limits exchanged (the integral is minus the one from " + print_text(a, table) + "), " + v->method;
+      return *v;
+    }
     return undecided_because("improper integral: " + improper_note_);
   }
 

@@ -98,7 +98,12 @@ std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& 
       case ProsePiece::Kind::Text: out += latex_escape_text(p.text); break;
       case ProsePiece::Kind::Emph: out += "\\emph{" + latex_escape_text(p.text) + "}"; break;
       case ProsePiece::Kind::Math: out += "$" + p.text + "$"; break;
-      case ProsePiece::Kind::Expr: out += "$" + latex_expression(p.expr, table, style) + "$"; break;
+      case ProsePiece::Kind::Expr: {
+        out += "$" + latex_expression(p.expr, table, style);
+        for (const auto& side : p.more) out += " = " + latex_expression(side, table, style);
+        out += "$";
+        break;
+      }
     }
   }
   return out;

@@ -116,8 +116,8 @@ int side_allowed(const ex& x, const ex& point, int side, const SymbolTable& ctx)
       break;
     default: return 1;
   }
-  bool constant = GiNaC::is_a<numeric>(point) || point.info(GiNaC::info_flags::real) ||
-                  d::ordered_symbols(point, ctx).empty();
+  // (a declared symbol is "real" to GiNaC too, so it is the absence of symbols that counts)
+  bool constant = GiNaC::is_a<numeric>(point) || d::ordered_symbols(point, ctx).empty();
   int verdict = by_assumptions;
   for (const ex& c : must_be_positive) {
     if (constant) {
@@ -131,7 +131,21 @@ int side_allowed(const ex& x, const ex& point, int side, const SymbolTable& ctx)
       verdict = -1;
     }
   }
-  return verdict;
+  if (verdict != -1 || constant) return verdict;
+  // A symbolic point: the side is open when the point lies strictly inside the domain on that
+  // side (c - eps is in [0, oo) for every small eps when c > 0, whatever c's size): the end it
+  // moves away from may be reached, the one it moves toward may not.
+  auto inside = [&](const ex& gap, bool strict) {   // gap > 0 (strict) or gap >= 0
+    return strict ? d::provably_positive(gap, ctx) : d::range_of(gap, ctx).nonnegative();
+  };
+  switch (dom.kind) {
+    case Domain::Kind::Positive:
+    case Domain::Kind::Nonnegative: return inside(point, side < 0) ? by_assumptions : -1;
+    case Domain::Kind::Negative: return inside(-point, side > 0) ? by_assumptions : -1;
+    case Domain::Kind::Interval:
+      return inside(point - dom.lo, side < 0) && inside(dom.hi - point, side > 0) ? by_assumptions : -1;
+    default: return -1;
+  }
 }
 
 // "mu -> 0+", "x -> oo"
@@ -223,7 +237,7 @@ LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& poin
     if (dir != 0 && s != dir) continue;
     int a = side_allowed(x, point, s, ctx);
     if (a == -1) {
-      res.reason = std::string("cannot tell whether x can approach the point from ") + (s > 0 ? "above" : "below") +
+      res.reason = "cannot tell whether " + x_in.get_name() + " can approach the point from " + (s > 0 ? "above" : "below") +
                    " within its declared domain" + (x_constrained(x, ctx) ? " and the assumptions" : "");
       return res;
     }
@@ -232,8 +246,8 @@ LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& poin
   if (sides.empty()) {
     const std::string where = x_constrained(x, ctx) ? " within its declared domain and the assumptions"
                                                     : " within its declared domain";
-    res.reason = dir != 0 ? std::string("x cannot approach the point from ") + (dir > 0 ? "above" : "below") + where
-                          : "x cannot approach the point from either side" + where;
+    res.reason = dir != 0 ? x_in.get_name() + " cannot approach the point from " + (dir > 0 ? "above" : "below") + where
+                          : x_in.get_name() + " cannot approach the point from either side" + where;
     return res;
   }
   std::vector<L::Outcome> out;

@@ -69,9 +69,12 @@ std::vector<ProsePiece> parse_prose(const ProseSource& src, const std::function<
       while (b < e && (t[b] == ' ' || t[b] == '\n')) ++b;
       while (e > b && (t[e - 1] == ' ' || t[e - 1] == '\n')) --e;
       if (b >= e) fail(at(i), "empty expression '``': write an expression of the file between the backticks", 2);
-      ProsePiece p{ProsePiece::Kind::Expr, t.substr(b, e - b), {}};
-      p.expr = parse_expression(std::string_view(t).substr(b, e - b), at(b));
-      validate(p.expr);
+      ProsePiece p{ProsePiece::Kind::Expr, t.substr(b, e - b), {}, {}};
+      // an expression, or an equation `beta = v/c` as prose writes them inline
+      Relation r = parse_relation(std::string_view(t).substr(b, e - b), at(b));
+      for (auto& side : r.sides) validate(side);
+      p.expr = std::move(r.sides[0]);
+      for (std::size_t j = 1; j < r.sides.size(); ++j) p.more.push_back(std::move(r.sides[j]));
       flush();
       out.push_back(std::move(p));
       i = k + 1;

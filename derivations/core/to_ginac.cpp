@@ -208,17 +208,24 @@ class Converter {
     SymbolTable bound;
     GiNaC::ex f, t, a, b;
     int a_inf = 0, b_inf = 0;   // -1 / +1: that limit of integration is -oo / oo (a, b are 0 then)
+    bool negate = false;        // written from oo (or to -oo): the limits were exchanged
   };
   IntegralParts integral_parts(const Node& n) {
     check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
     variable_arg(n, n.args[1], table_);
     const int a_inf = infinity_sign(n.args[2]), b_inf = infinity_sign(n.args[3]);
-    if (a_inf > 0 || b_inf < 0)
-      throw UndecidedLimit("'" + short_text(n) + "': an integral from oo or to -oo; write it with the limits the other way round",
-                           n.pos);
+    if (a_inf != 0 && a_inf == b_inf)
+      throw UndecidedLimit("'" + short_text(n) + "': both limits of integration are infinite on the same side", n.pos);
     Integrand in = integrand_of(n, table_);
-    return IntegralParts{std::move(in.table), in.f, in.x, a_inf ? GiNaC::ex(0) : conv(n.args[2]),
-                         b_inf ? GiNaC::ex(0) : conv(n.args[3]), a_inf, b_inf};
+    IntegralParts p{std::move(in.table), in.f, in.x, a_inf ? GiNaC::ex(0) : conv(n.args[2]),
+                    b_inf ? GiNaC::ex(0) : conv(n.args[3]), a_inf, b_inf};
+    // the potential's integral(F, s, oo, r) is -integral(F, s, r, oo)
+    if (a_inf > 0 || b_inf < 0) {
+      std::swap(p.a, p.b);
+      std::swap(p.a_inf, p.b_inf);
+      p.negate = true;
+    }
+    return p;
   }
 
   // A definite integral inside an expression: a polynomial integrand on a finite interval exactly
@@ -237,7 +244,7 @@ class Converter {
     const integrals::Definite d =
         integrals::definite_integral(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, p.bound);
     using K = integrals::Definite::Kind;
-    if (d.kind == K::Value) return d.value;
+    if (d.kind == K::Value) return p.negate ? GiNaC::ex(-d.value) : d.value;
     if (d.kind == K::Diverges)
       throw UndecidedLimit("'" + short_text(n) + "' diverges" +
                                (d.infinite > 0 ? " to oo" : d.infinite < 0 ? " to -oo" : "") + " (" + d.evidence + ")",

@@ -7,6 +7,7 @@
 #include "derivations/core/limit.hpp"
 #include "derivations/core/printer.hpp"
 #include "derivations/core/prove.hpp"
+#include "derivations/core/prove_detail.hpp"
 #include "derivations/integrals/antiderivative.hpp"
 
 namespace dc::integrals {
@@ -137,9 +138,15 @@ SymbolTable restricted(const SymbolTable& ctx, const symbol& x, const End& lo, c
   }
   // a half-line (lo, oo) with lo >= 0 lies in the positive numbers, (-oo, hi) with hi <= 0 in the
   // negative ones: the domain says so (sums of positive terms are then seen to be positive)
-  auto numeric_sign = [](const End& e) -> std::optional<int> {
+  // (a symbolic end counts by the sign its declarations fix: (R, oo) with R positive)
+  auto numeric_sign = [&](const End& e) -> std::optional<int> {
+    if (e.inf) return std::nullopt;
     const ex v = e.at.evalf();
-    if (e.inf || !is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) return std::nullopt;
+    if (!is_a<numeric>(v) || !ex_to<numeric>(v).is_real()) {
+      if (detail::range_of(e.at, ctx).nonnegative()) return 1;
+      if (detail::range_of(-e.at, ctx).nonnegative()) return -1;
+      return std::nullopt;
+    }
     const numeric n = ex_to<numeric>(v);
     return n.is_zero() ? 0 : n > 0 ? 1 : -1;
   };

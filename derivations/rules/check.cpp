@@ -9,6 +9,7 @@
 
 #include "derivations/rules/context.hpp"
 #include "derivations/rules/dispatch.hpp"
+#include "derivations/rules/in_domain.hpp"
 
 namespace dc {
 
@@ -151,6 +152,36 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   if ((s.rule.name == "solves_ode" || (s.rule.name == "integrate" && !integral_claim)) && s.rule.var)
     require_solution_without_singularities(res.verdict, s.rule.var->label);
   if (s.stable_of) check_stable_form(d, s, opt, res);
+  // `M = integral(...) = G` naming a quantity declared `positive`: G must be positive too
+  if (s.names_result && claim.sides[0].kind == NodeKind::Symbol)
+    if (const SymbolInfo* info = d.symbols.find(claim.sides[0].text);
+        info && info->domain.kind != Domain::Kind::Real && res.verdict.holds()) {
+      try {
+        Verdict in = rules::value_in_domain(claim_sides(d, s).back(), info->domain, d.symbols, opt);
+        if (!in.holds() || in.kind == VerdictKind::HoldsNumerically) {
+          const bool refuted = in.kind == VerdictKind::Refuted;
+          const std::string why = "the value named " + info->name + " must be " + info->domain.to_string() + ": " +
+                                  (in.detail.empty() ? in.reason : in.detail);
+          if (in.holds()) {   // holds numerically: so does the step
+            if (res.verdict.kind == VerdictKind::Proved) {
+              res.verdict.kind = VerdictKind::HoldsNumerically;
+              res.verdict.points = in.points;
+              res.verdict.digits = in.digits;
+              res.verdict.false_accept = in.false_accept;
+            }
+            res.verdict.method = rules::prefix_method(res.verdict.method, in.method);
+          } else {
+            res.verdict.kind = refuted ? VerdictKind::Refuted : VerdictKind::Undecided;
+            res.verdict.method = rules::prefix_method(res.verdict.method, in.method);
+            if (refuted) res.verdict.detail = why, res.verdict.point = in.point;
+            else res.verdict.reason = why;
+          }
+        }
+      } catch (const std::exception&) {
+        res.verdict.kind = VerdictKind::Undecided;
+        res.verdict.reason = "the value named " + info->name + " could not be compared with its declared domain";
+      }
+    }
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }

@@ -149,16 +149,27 @@ std::vector<Eq> StepContext::equations(const RuleArg& a) const {
   if (r->sides.size() < 2)
     fail(a.pos, "'" + from + "' is an expression, not an equation; a rule can only use equations", a.length);
   std::vector<Eq> out;
+  // The sides with a value: a side whose limit or integral has none (the limit of an abstract
+  // function in `v_T = limit(v(t), t, oo) = m*g/b`) is left out, and the others, equal to it
+  // and so to each other, still give equations.
   std::vector<ex> sd;
-  try {
-    sd = sides(*r);
-  } catch (const InputError& e) {
-    fail(a.pos, "'" + from + "' cannot be used here: " + e.message(), a.length);
+  std::vector<std::size_t> at;
+  std::string undecided_why;
+  for (std::size_t i = 0; i < r->sides.size(); ++i) {
+    try {
+      sd.push_back(conv(r->sides[i]));
+      at.push_back(i);
+    } catch (const InputError& e) {
+      fail(a.pos, "'" + from + "' cannot be used here: " + e.message(), a.length);
+    } catch (const UndecidedLimit& e) {
+      undecided_why = e.what();
+    }
   }
+  if (sd.size() < 2 && !undecided_why.empty()) throw UndecidedLimit(undecided_why);
   for (std::size_t i = 0; i + 1 < sd.size(); ++i) {
     Eq q{sd[i] - sd[i + 1], ex(), from};
-    if (i == 0 && r->sides[0].kind == NodeKind::Symbol) q.hint = sd[0];
-    if (i == 0 && r->sides[0].kind == NodeKind::Call && pool_function_index(sd[0]) >= 0) q.hint = sd[0];
+    if (i == 0 && at[0] == 0 && r->sides[0].kind == NodeKind::Symbol) q.hint = sd[0];
+    if (i == 0 && at[0] == 0 && r->sides[0].kind == NodeKind::Call && pool_function_index(sd[0]) >= 0) q.hint = sd[0];
     out.push_back(std::move(q));
   }
   return out;

@@ -21,8 +21,8 @@ bool is_infinity(const Node& n, int& sign) {
 
 // `limit(g, x, p)` written as a side of the claim: g must be f (after the rule's
 // substitutions), x and p the rule's.
-Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const ex& x, const ex& point, int inf,
-                              const Substitutions& subs) {
+Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const std::optional<ex>& ref_lhs,
+                              const ex& x, const ex& point, int inf, const Substitutions& subs) {
   const RuleSpec& rule = c.rule();
   const SymbolTable& symbols = c.d.symbols;
   ex gx = to_ginac(n.args[1], symbols);
@@ -33,6 +33,14 @@ Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const 
   if (!gx.is_equal(x) || !same_point)
     c.fail(n.pos, "this limit is not the one of the rule ('" + rule.text + "')", n.length);
   ex g = apply_subs(to_ginac(n.args[0], symbols), subs);
+  // `of A` with A: v(t) = f: the limit of v(t) is the limit of f
+  if (ref_lhs) {
+    Verdict w = prove_equal(g, *ref_lhs, symbols, c.opt);
+    if (w.kind == VerdictKind::Proved) {
+      w.method = prefix_method("limit argument (the cited step's left side)", w.method);
+      return w;
+    }
+  }
   Verdict v = prove_equal(g, f, symbols, c.opt);
   v.method = prefix_method("limit argument", v.method);
   return v;
@@ -66,7 +74,11 @@ Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, cons
   return all.result();
 }
 
-Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
+Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_limit) {
+  // `v_T = limit(v(t), t, oo) = m*g/b`: v_T only names the limit; the rest is the claim
+  Relation own = named_claim;
+  if (c.s.names_result) own.sides.erase(own.sides.begin());
+  const Relation& claim = own;
   const RuleSpec& rule = c.rule();
   const SymbolTable& symbols = c.d.symbols;
   const std::string rname = is_limit ? "limit" : "series";
@@ -170,7 +182,7 @@ Verdict limit_or_series(StepContext& c, const Relation& claim, bool is_limit) {
     }
     Node n = resolve_definitions(c.d, written);
     if (is_limit && is_limit_call(n)) {
-      all.add(written_limit_matches(c, n, f, x, point, inf, subs), what, true);
+      all.add(written_limit_matches(c, n, f, ref_lhs, x, point, inf, subs), what, true);
       continue;
     }
     if (i == 0 && ref_lhs) {

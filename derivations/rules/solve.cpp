@@ -15,6 +15,7 @@
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/elimination.hpp"
 #include "derivations/rules/follows.hpp"
+#include "derivations/rules/in_domain.hpp"
 #include "derivations/rules/solve.hpp"
 
 namespace dc::rules {
@@ -23,80 +24,6 @@ namespace {
 
 namespace d = dc::detail;
 
-// The claimed root g of an unknown declared `in (lo, hi)` (ends open or closed) must lie in that
-// interval for every admissible parameter value: a constant g is compared exactly (or at 50
-// digits when its difference from an end is not exactly zero); otherwise lo <= g and g <= hi are
-// decided as sqrt((g - lo)^2) = g - lo and sqrt((hi - g)^2) = hi - g by the prover, whose probe
-// refutes at a point where g leaves the interval.
-Verdict root_in_interval(const ex& g, const Domain& dom, StepContext& c) {
-  Combiner all;
-  auto end = [&](const ex& gap, bool open, const std::string& what) {   // gap >= 0 (> 0 if open)
-    const ex v = gap.evalf();
-    if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
-      const bool zero = gap.normal().is_zero();
-      const bool inside = zero ? !open : GiNaC::ex_to<GiNaC::numeric>(v) > 0;
-      Verdict r = inside ? proved("root in the declared domain", what)
-                         : Verdict{};
-      if (!inside) {
-        r.kind = VerdictKind::Refuted;
-        r.method = "root in the declared domain";
-        r.detail = "the claimed root " + c.text(g) + " is not " + what;
-      }
-      all.add(r, what);
-      return;
-    }
-    if (open ? d::provably_positive(gap, c.d.symbols) : d::range_of(gap, c.d.symbols).nonnegative()) {
-      all.add(proved("root in the declared domain", what + " (range of the root)"), what);
-      return;
-    }
-    Verdict r = prove_equal(GiNaC::sqrt(GiNaC::pow(gap, 2)), gap, c.d.symbols, c.opt);
-    r.method = prefix_method("root in the declared domain", r.method);
-    all.add(r, what);
-  };
-  // asin(u), acos(u), atan(u): their exact ranges, and asin/atan have the sign of u
-  if (GiNaC::is_a<GiNaC::function>(g)) {
-    const std::string f = GiNaC::ex_to<GiNaC::function>(g).get_name();
-    const ex half = GiNaC::Pi / 2;
-    ex lo, hi;
-    bool strict = f == "atan";
-    if (f == "asin" || f == "atan") lo = -half, hi = half;
-    else if (f == "acos") lo = 0, hi = GiNaC::Pi;
-    if (!lo.is_zero() || f == "acos") {
-      const ex u = g.op(0);
-      auto at_least = [&](const ex& a, const ex& b) {   // a >= b for constants
-        const ex v = (a - b).evalf();
-        return (a - b).normal().is_zero() ||
-               (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real() &&
-                GiNaC::ex_to<GiNaC::numeric>(v) > 0);
-      };
-      auto numeric_end = [](const ex& e) { return GiNaC::is_a<GiNaC::numeric>(e.evalf()); };
-      // lower end: below the range's lower bound, or 0 with u >= 0 (u > 0 for an open end)
-      // an open end equal to the range's bound: u must stay off the argument that reaches it
-      const ex u_at_lo = f == "acos" ? ex(1) : ex(-1), u_at_hi = f == "acos" ? ex(-1) : ex(1);
-      auto off = [&](const ex& bound) {   // u < 1 (bound 1) or u > -1 (bound -1)
-        return d::provably_positive(bound.is_equal(1) ? 1 - u : u + 1, c.d.symbols);
-      };
-      auto end_ok = [&](const ex& range_end, const ex& dom_end, bool open, const ex& u_end, bool lower) {
-        if (!(lower ? at_least(range_end, dom_end) : at_least(dom_end, range_end))) return false;
-        if (!(range_end - dom_end).normal().is_zero() || !open || strict) return true;
-        return off(u_end);
-      };
-      bool lo_ok = numeric_end(dom.lo) &&
-                   (end_ok(lo, dom.lo, dom.lo_open, u_at_lo, true) ||
-                    (dom.lo.is_zero() && f != "acos" &&
-                     (dom.lo_open ? d::provably_positive(u, c.d.symbols) : d::range_of(u, c.d.symbols).nonnegative())));
-      bool hi_ok = numeric_end(dom.hi) &&
-                   (end_ok(hi, dom.hi, dom.hi_open, u_at_hi, false) ||
-                    (dom.hi.is_zero() && f != "acos" &&
-                     (dom.hi_open ? d::provably_positive(-u, c.d.symbols) : d::range_of(-u, c.d.symbols).nonnegative())));
-      if (lo_ok && hi_ok)
-        return proved("root in the declared domain", "the range of " + f + " lies in " + dom.to_string());
-    }
-  }
-  end(g - dom.lo, dom.lo_open, std::string(dom.lo_open ? "> " : ">= ") + c.text(dom.lo));
-  end(dom.hi - g, dom.hi_open, std::string(dom.hi_open ? "< " : "<= ") + c.text(dom.hi));
-  return all.result();
-}
 
 
 // Does the linear system `nums` (linear in the unknowns) determine them? Only when some
@@ -239,8 +166,11 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
     std::string root_note;
     if (GiNaC::is_a<GiNaC::symbol>(u.out(c, lhs))) {
       const SymbolInfo* info = c.d.symbols.find(GiNaC::ex_to<GiNaC::symbol>(u.out(c, lhs)));
-      if (info && info->domain.kind == Domain::Kind::Interval) {
-        const Verdict v = root_in_interval(u.out(c, G), info->domain, c);
+      const bool constant_root = GiNaC::is_a<GiNaC::numeric>(u.out(c, G).evalf());
+      if (info && (info->domain.kind == Domain::Kind::Interval ||
+                   (info->domain.kind != Domain::Kind::Real && constant_root))) {
+        // (a constant root is compared exactly: T = 0 is not positive)
+        const Verdict v = value_in_domain(u.out(c, G), info->domain, c.d.symbols, c.opt);
         all.add(v, "the claimed root must be " + info->domain.to_string() + " like " + info->name, true);
         root_note = " (the root is the one in the declared domain: " + info->name + " " + info->domain.to_string() + ")";
       } else if (info && info->domain.kind != Domain::Kind::Real) {

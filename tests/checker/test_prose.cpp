@@ -108,3 +108,14 @@ TEST_CASE("a file with only text and no step is still 'no steps'", "[format][pro
   dc::InputError e = error_of("text Just words.\n");
   CHECK(std::string(e.what()).find("no steps") != std::string::npos);
 }
+
+TEST_CASE("an inline expression may be an equation whose sides are checked symbols", "[format][prose]") {
+  dc::Derivation d = parse("text\n    with `p1 = m1*v1` the momentum is known\ns: p1 = m1*v1\n    by given\n");
+  REQUIRE(d.prose.size() == 1);
+  bool found = false;
+  for (const auto& p : d.prose[0].pieces)
+    if (p.kind == dc::ProsePiece::Kind::Expr) found = p.more.size() == 1;
+  CHECK(found);
+  const dc::InputError e = error_of("text\n    with `p1 = m1*w` it is slow\ns: p1 = m1*v1\n    by given\n");
+  CHECK(std::string(e.what()).find("'w'") != std::string::npos);
+}

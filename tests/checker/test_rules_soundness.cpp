@@ -520,6 +520,6 @@ TEST_CASE("a chain may name a new quantity, the name never hides a wrong link", 
   require_refuted(c, "bad_later");
   CHECK(c.d->find("bad_chain")->names_result);
   require_refuted(c, "bad_chain");    // U names A, but A = 2*A is false
-  CHECK_FALSE(c.d->find("bad_positive")->names_result);   // W is declared positive: not a free name
-  require_refuted(c, "bad_positive");
+  CHECK(c.d->find("bad_positive")->names_result);   // W is named, and its value must be positive:
+  require_refuted(c, "bad_positive");                // -A is not
 }
