@@ -1,6 +1,8 @@
 // Limits and first-order expansions (GiNaC has no limit()); see limit.hpp.
 #include "derivations/core/limit.hpp"
 
+#include "derivations/core/big_o.hpp"
+
 #include "derivations/kernel/ball.hpp"
 
 #include <sstream>
@@ -444,6 +446,18 @@ std::optional<ex> series_first_order(const ex& f, const GiNaC::symbol& x_in, con
     std::string why = check_series_side(f, *s, x, point, side, *ctx);
     if (!why.empty()) {
       if (reason) *reason = why;
+      return std::nullopt;
+    }
+  }
+  // The expansion above treats the parameters as generic (sqrt(x^2 + a^2) = |a| + ... assumes
+  // a != 0, where it is |x|): the remainder must be O((x - point)^2) by the limit algorithm,
+  // which decides the signs of coefficients from the declarations.
+  if (GiNaC::is_a<GiNaC::symbol>(x)) {
+    const Verdict r = remainder_is_big_o(f - *s, GiNaC::ex_to<GiNaC::symbol>(x), point, 0, 0, 2, *ctx);
+    if (r.kind != VerdictKind::Proved) {
+      if (reason)
+        *reason = "the first-order expansion " + d::canon_text(*s) + " is not shown to leave a remainder O((x - point)^2) "
+                  "for every value the declarations allow: " + (r.reason.empty() ? r.detail : r.reason);
       return std::nullopt;
     }
   }

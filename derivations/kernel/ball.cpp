@@ -229,6 +229,7 @@ class Evaluator {
   BallStatus exp_of(const arb_t x, arb_t out) {
     arb_exp(out, x, prec_);
     if (arb_is_finite(out) && !(arb_contains_zero(out) && arb_is_positive(x))) return BallStatus::Value;
+    if (!arb_is_finite(x)) return unknown("exp of an argument that is not finite");
     if (arf_cmpabs_2exp_si(arb_midref(x), kMaxExpBits) > 0) return unknown("exp of an argument beyond 2^(2^26)");
     Tmp ln2, t;
     arb_const_log2(ln2.v, prec_);
@@ -238,6 +239,14 @@ class Evaluator {
     arf_init(hi);
     arb_get_lbound_arf(lo, t.v, prec_);
     arb_get_ubound_arf(hi, t.v, prec_);
+    // a wide ball (exp(exp(exp(x))) at a huge x) has ends beyond what an fmpz exponent takes:
+    // arf_get_fmpz aborts on them (found by the published corpus, gr_8_6)
+    if (!arf_is_finite(lo) || !arf_is_finite(hi) || arf_cmpabs_2exp_si(lo, kMaxExpBits) > 0 ||
+        arf_cmpabs_2exp_si(hi, kMaxExpBits) > 0) {
+      arf_clear(lo);
+      arf_clear(hi);
+      return unknown("exp of an argument beyond 2^(2^26)");
+    }
     fmpz_t klo, khi;
     fmpz_init(klo);
     fmpz_init(khi);

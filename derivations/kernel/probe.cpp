@@ -177,9 +177,29 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   long max_digits = 0;
   // One point drawn at `tier` and compared. A certified difference refutes (v is set, true is
   // returned); an agreement and the reasons a point is unusable are counted when `counting`.
+  // Special values where formulas degenerate: a closed end of a declared domain (0 of a
+  // nonnegative symbol, a and b of [a, b]) and 0 of a real one. The draws above avoid them;
+  // after an agreement they are tried, one symbol at a time, and can only refute (a claim false
+  // only at a = 0, such as sqrt(x^2 + a^2) = abs(a) + O(x^2), is caught there).
+  std::vector<std::pair<ex, ex>> specials;
+  for (const auto& sym : sampler.symbols()) {
+    const Domain dom = d::domain_of(sym, ctx);
+    if (dom.kind == Domain::Kind::Real || dom.kind == Domain::Kind::Nonnegative) specials.push_back({sym, 0});
+    if (dom.kind == Domain::Kind::Interval) {
+      if (!dom.lo_open) specials.push_back({sym, dom.lo});
+      if (!dom.hi_open) specials.push_back({sym, dom.hi});
+    }
+  }
+  int special = -1;   // >= 0: try_point sets specials[special] on a tier-0 point
   auto try_point = [&](int tier, bool counting) {
     bool admissible = false;
     GiNaC::exmap p = sampler.draw(rng, tier, &admissible);
+    if (special >= 0) {
+      const auto& [sym, value] = specials[static_cast<std::size_t>(special)];
+      p[sym] = value;
+      admissible = true;
+      for (const Constraint* k : sampler.constraints()) admissible = admissible && k->holds_at(p);
+    }
     if (!admissible) {
       if (counting) ++excluded;
       return false;
@@ -237,6 +257,13 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   if (agreed >= need && !sampler.constraints().empty())
     for (int k = 0; k < kBoundarySweep; ++k, ++attempts)
       if (try_point(k % 2 == 0 ? 4 : 5, false)) return v;
+  if (agreed >= need)
+    for (std::size_t k = 0; k < specials.size() && k < 8; ++k, ++attempts) {
+      special = static_cast<int>(k);
+      const bool refuted = try_point(0, false);
+      special = -1;
+      if (refuted) return v;
+    }
   if (agreed >= need) {
     v.kind = VerdictKind::HoldsNumerically;
     v.points = agreed;

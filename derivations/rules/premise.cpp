@@ -4,6 +4,7 @@
 
 #include "derivations/core/expr.hpp"
 #include "derivations/rules/follows.hpp"
+#include "derivations/rules/in_domain.hpp"
 
 namespace dc::rules {
 
@@ -13,6 +14,17 @@ Verdict given(StepContext&, const Relation&) { return proved("given", "premise t
 // every further link is a claim about the definition, checked as an identity -- a definition
 // must not make a false equation citable.
 Verdict definition(StepContext& c, const Relation& claim) {
+  // A name declared with a domain (`symbol Q : positive`) must get a value in it: Q = -a would
+  // be a premise that contradicts the declaration (and makes Q = -a < 0 citable).
+  if (claim.sides[0].kind == NodeKind::Symbol)
+    if (const SymbolInfo* info = c.d.symbols.find(claim.sides[0].text);
+        info && !info->defined_by_step && !info->is_function && info->domain.kind != Domain::Kind::Real) {
+      Verdict in = value_in_domain(c.conv(claim.sides[1]), info->domain, c.d.symbols, c.opt);
+      if (in.kind == VerdictKind::Refuted) {
+        in.detail = "the value defined for " + info->name + " must be " + info->domain.to_string() + ": " + in.detail;
+        return in;
+      }
+    }
   if (claim.sides.size() <= 2) return proved("definition", "introduces " + to_text(claim.sides[0]));
   std::vector<ex> links;
   for (std::size_t i = 1; i < claim.sides.size(); ++i) links.push_back(c.conv(claim.sides[i]));
