@@ -5,6 +5,8 @@
 //     Y = G, and G takes the initial value at T0.
 // The references hold at the bounds: only equations between function applications of t hold
 // for every t (see has_application_at); the others are used as they are.
+#include <functional>
+
 #include "derivations/core/integral_equal.hpp"
 #include "derivations/core/prove_detail.hpp"
 #include "derivations/kernel/quadrature.hpp"
@@ -169,6 +171,31 @@ Verdict integrate(StepContext& c, const Relation& claim) {
     if (rule.var && side0.args.size() == 4 && !c.symbol_of(*rule.var).is_equal(to_ginac(side0.args[1], c.d.symbols)))
       c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
     return integral_claim(c, claim, at);
+  }
+  if (rule.refs.empty() && !rule.point) {
+    // Integrals inside the claim's expressions, `U = -integral(F, s, oo, r) = -G*M*m/r`: each
+    // link is compared with its integrals evaluated (integral_equal.hpp)
+    bool any = false;
+    std::function<bool(const Node&)> has = [&](const Node& n) {
+      if (n.kind == NodeKind::Call && n.text == "integral") return true;
+      for (const auto& a : n.args)
+        if (has(a)) return true;
+      return false;
+    };
+    std::vector<Node> sides;
+    for (std::size_t i = at; i < claim.sides.size(); ++i) {
+      sides.push_back(resolve_definitions(c.d, claim.sides[i]));
+      any = any || has(sides.back());
+    }
+    if (any && sides.size() >= 2) {
+      Combiner all;
+      for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+        std::optional<Verdict> v = integral_equality(sides[i], sides[i + 1], c.d.symbols, c.opt);
+        all.add(v ? *v : prove_equal(to_ginac(sides[i], c.d.symbols), to_ginac(sides[i + 1], c.d.symbols), c.d.symbols, c.opt),
+                sides.size() > 2 ? "link " + std::to_string(i + 1) : "");
+      }
+      return all.result();
+    }
   }
   if (!rule.var)
     c.fail(rule.pos, "'by integrate' with cited equations needs the variable: 'by integrate A wrt t ...'",
