@@ -667,7 +667,7 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 
 // check_satisfiable lives in satisfiable.cpp.
 
-std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx) {
+std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx, const std::string& free_of) {
   GiNaC::lst parts;
   std::function<void(const Node&)> walk;
   std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
@@ -704,7 +704,8 @@ std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTa
       // reported where the expression is used
     }
   };
-  walk(n);
+  if (free_of.empty()) walk(n);
+  else free_parts(n, free_of);
   return side_conditions(parts, ctx);
 }
 

@@ -54,7 +54,10 @@ std::vector<SideCondition> side_conditions(const GiNaC::ex& e, const SymbolTable
 // power and quotient of the tree is converted on its own, so conditions that GiNaC's automatic
 // simplification would erase (exp(log(x)) becomes x) are still found. Subtrees that cannot be
 // converted (integral(...), an undecidable limit) are skipped; their arguments are not.
-std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx);
+// With `free_of` = "x": only the parts free of x (a limit or series claim is about x near its
+// point only; the conditions of the parts without x are claims of their own).
+std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx,
+                                                   const std::string& free_of = {});
 
 // A claim must hold on the whole declared domain: when a side condition is Violated (a point
 // of the domain where a side is certainly undefined), a verdict that holds becomes Refuted

@@ -80,24 +80,6 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
 void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
   try {
     const bool asymptotic = (s.rule.name == "limit" || s.rule.name == "series") && s.rule.var;
-    auto add = [&](const Node& m) {
-      for (auto& sc : side_conditions_of_tree(m, d.symbols)) {
-        bool dup = false;
-        for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
-        if (!dup) res.verdict.side_conditions.push_back(sc);
-      }
-    };
-    std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
-      if (m.kind == NodeKind::Symbol && m.text == x) return true;
-      for (const auto& a : m.args)
-        if (mentions(a, x)) return true;
-      return false;
-    };
-    // (side_conditions_of_tree leaves out what an integral's or a limit's bound variable needs)
-    std::function<void(const Node&, const std::string&)> free_parts = [&](const Node& m, const std::string& x) {
-      if (!mentions(m, x)) return add(m);
-      for (const auto& a : m.args) free_parts(a, x);
-    };
     for (std::size_t si = 0; si < claim.sides.size(); ++si) {
       const Node& side = claim.sides[si];
       if (limit_value_side(s, side, d.symbols)) continue;
@@ -106,8 +88,11 @@ void add_claim_side_conditions(const Derivation& d, const Step& s, const Relatio
       // `log(sin(x)) = log(x) - x^2/6  by series x -> 0+ to order 4`): the conditions of parts
       // that involve x are not claims about x's whole domain (the limit engine decides where the
       // expressions are real near the point); the conditions of parts free of x are.
-      if (asymptotic) free_parts(n, s.rule.var->label);
-      else add(n);
+      for (auto& sc : side_conditions_of_tree(n, d.symbols, asymptotic ? s.rule.var->label : std::string())) {
+        bool dup = false;
+        for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
+        if (!dup) res.verdict.side_conditions.push_back(sc);
+      }
     }
   } catch (const std::exception&) {
     // conversion problems were reported by the rule already
