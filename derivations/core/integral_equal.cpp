@@ -129,6 +129,23 @@ std::optional<Verdict> integrals_in_expressions(const Node& lhs, const Node& rhs
   return v;
 }
 
+// integral(f, x) = F: F is an antiderivative of f on x's declared domain: dF/dx = f, and F
+// defined (without a jump) wherever f is (require_antiderivative_defined). Here x is the
+// quantity itself, not a bound variable: F is a function of it.
+Verdict indefinite(const Node& integral, const Node& other, const SymbolTable& table, const ProveOptions& opt) {
+  const ex f = to_ginac(integral.args[0], table);
+  const ex xe = to_ginac(integral.args[1], table);
+  if (!GiNaC::is_a<GiNaC::symbol>(xe))
+    throw InputError(integral.args[1].pos, "the variable of integration must be a symbol", integral.args[1].length);
+  const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(xe);
+  const ex F = to_ginac(other, table);
+  Verdict v = prove_equal(F.diff(x), f, table, opt);
+  v.method = prefixed("indefinite integral: d/d" + x.get_name() + " of the closed form", v.method);
+  v.side_conditions = side_conditions_of_tree(other, table);
+  require_antiderivative_defined(v, f, x.get_name(), table);
+  return v;
+}
+
 }  // namespace
 
 std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const SymbolTable& table,
@@ -140,8 +157,9 @@ std::optional<Verdict> integral_equality(const Node& lhs, const Node& rhs, const
   if (is_integral(lhs) && !in_r) integral = &lhs, other = &rhs;
   else if (is_integral(rhs) && !in_l) integral = &rhs, other = &lhs;
   if (!integral) return integrals_in_expressions(lhs, rhs, table, opt);
+  if (integral->args.size() == 2) return indefinite(*integral, *other, table, opt);
   if (integral->args.size() != 4)
-    throw InputError(integral->pos, "expected integral(f, x, a, b): 4 arguments", integral->length);
+    throw InputError(integral->pos, "expected integral(f, x) or integral(f, x, a, b)", integral->length);
   int a_inf = infinity_sign(integral->args[2]), b_inf = infinity_sign(integral->args[3]);
   if (a_inf != 0 && a_inf == b_inf) return undecided_because("both limits of integration are infinite on the same side");
   // f in a fresh variable of integration: x ranges over (a, b), whatever is declared of x

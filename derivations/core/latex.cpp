@@ -315,6 +315,11 @@ class Writer {
       return "\\int_{" + top(n.args[2]) + "}^{" + top(n.args[3]) + "} " + operand(g, need) +
              " \\, \\mathrm{d} " + top(n.args[1]);
     }
+    if (f == "integral" && n.args.size() == 2) {   // indefinite
+      const Node& g = n.args[0];
+      bool need = g.kind == NodeKind::Add || g.kind == NodeKind::Sub || g.kind == NodeKind::Neg;
+      return "\\int " + operand(g, need) + " \\, \\mathrm{d} " + top(n.args[1]);
+    }
     if (is_builtin_function(f)) return "\\operatorname{" + f + "}\\left(" + args(n) + "\\right)";
     if (bare_function(n)) return symbol(f);
     return symbol(f) + "(" + args(n) + ")";

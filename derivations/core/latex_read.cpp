@@ -489,10 +489,15 @@ class Reader {
       return call("limit", std::move(a));
     }
     if (accept("\\int")) {
-      expect_char('_', "expected '_' after \\int");
-      Node lo = braced_expr();
-      expect_char('^', "expected '^' after the lower limit");
-      Node hi = braced_expr();
+      skip_ws();
+      const bool definite = peek() == '_';   // else indefinite: \int f \, \mathrm{d} x
+      Node lo, hi;
+      if (definite) {
+        expect_char('_', "expected '_' after \\int");
+        lo = braced_expr();
+        expect_char('^', "expected '^' after the lower limit");
+        hi = braced_expr();
+      }
       Node body = expr();
       expect("\\,");
       expect("\\mathrm{d}");
@@ -501,8 +506,10 @@ class Reader {
       std::vector<Node> a;
       a.push_back(std::move(body));
       a.push_back(std::move(var));
-      a.push_back(std::move(lo));
-      a.push_back(std::move(hi));
+      if (definite) {
+        a.push_back(std::move(lo));
+        a.push_back(std::move(hi));
+      }
       return call("integral", std::move(a));
     }
     if (accept("\\operatorname")) {

@@ -433,6 +433,13 @@ class Converter {
                              n.pos);
       return r.value;
     }
+    if (f == "integral" && n.args.size() == 2) {
+      variable_arg(n, n.args[1], table_);
+      (void)conv(n.args[0]);
+      throw UndecidedLimit("'" + short_text(n) + "' is an indefinite integral, defined up to a constant: it has no "
+                           "value inside an expression; as a whole side, integral(f, x) = F claims dF/dx = f",
+                           n.pos);
+    }
     if (f == "integral") return integral_value(n, integral_parts(n));
     const SymbolInfo& info = declared_function(n, table_);
     if (info.params.size() != 1)
@@ -627,11 +634,14 @@ class Dimensioner {
       return dim(n.args[0]);
     }
     if (f == "integral") {
-      check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
+      check_count(n, 2, 4, "integral(f, x) or integral(f, x, a, b)");
+      if (n.args.size() == 3) bad_arg_count(n, "integral(f, x) or integral(f, x, a, b)");
       const SymbolInfo& x = variable_arg(n, n.args[1], table_);
       Dimension xd = x.has_dimension ? x.dimension : Dimension();
-      require_same(n.args[2], xd, "the lower bound of the integral over " + x.name);
-      require_same(n.args[3], xd, "the upper bound of the integral over " + x.name);
+      if (n.args.size() == 4) {
+        require_same(n.args[2], xd, "the lower bound of the integral over " + x.name);
+        require_same(n.args[3], xd, "the upper bound of the integral over " + x.name);
+      }
       return dim(n.args[0]) * xd;
     }
     const SymbolInfo& info = declared_function(n, table_);

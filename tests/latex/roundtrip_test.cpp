@@ -239,3 +239,22 @@ TEST_CASE("one-sided limits read back with their side", "[latex][roundtrip]") {
   CHECK(sided >= 2);
   CHECK_THROWS_AS(dc::read_latex_expression("\\lim_{x \\to 0^{*}} x", d.symbols), dc::InputError);
 }
+
+TEST_CASE("integrals read back: definite, improper and indefinite", "[latex][roundtrip]") {
+  dc::Derivation d = dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/rules/bound_variables.dc");
+  std::string tex = dc::write_latex(d, dc::LatexOptions{});
+  int integrals = 0, indefinite = 0;
+  for (const auto& disp : dc::extract_latex_displays(tex)) {
+    const dc::Step* s = d.find(disp.label);
+    REQUIRE(s);
+    if (disp.latex.find("\\int") == std::string::npos) continue;
+    CAPTURE(disp.label, disp.latex);
+    dc::Relation r = dc::read_latex_relation(disp.latex, d.symbols);
+    REQUIRE(r.sides.size() == s->claim.sides.size());
+    CHECK(dc::to_text(r.sides[0]) == dc::to_text(s->claim.sides[0]));
+    ++integrals;
+    if (s->claim.sides[0].kind == dc::NodeKind::Call && s->claim.sides[0].args.size() == 2) ++indefinite;
+  }
+  CHECK(integrals >= 8);
+  CHECK(indefinite == 3);
+}
