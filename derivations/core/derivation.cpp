@@ -1341,12 +1341,15 @@ Node substitute_params(const Node& n, const std::map<std::string, const Node*>& 
   return out;
 }
 
-Node resolve(const Node& n, const Definitions& defs, int depth) {
+// `in_integral`: inside the integrand of an integral, where the functions are applied at the
+// variable of integration (a point of (a, b), not the declared parameter): a named derivative
+// there uses its closed form, as at any point.
+Node resolve(const Node& n, const Definitions& defs, int depth, bool in_integral = false) {
   if (depth > 64) throw InputError(n.pos, "definitions nested too deeply (more than 64 levels)", n.length);
   if (n.kind == NodeKind::Symbol) {
     auto def = defs.find(n.text);
     if (def && def->params.empty()) {
-      Node r = resolve(*def->body, defs, depth + 1);
+      Node r = resolve(*def->body, defs, depth + 1, in_integral);
       r.parenthesized = true;
       r.pos = n.pos;
       return r;
@@ -1354,7 +1357,9 @@ Node resolve(const Node& n, const Definitions& defs, int depth) {
     return n;
   }
   Node out = n;
-  for (auto& a : out.args) a = resolve(a, defs, depth);
+  const bool integral = n.kind == NodeKind::Call && n.text == "integral";
+  for (std::size_t i = 0; i < out.args.size(); ++i)
+    out.args[i] = resolve(out.args[i], defs, depth, in_integral || (integral && i == 0));
   if (n.kind == NodeKind::Call) {
     auto def = defs.find(n.text);
     if (def && !def->params.empty() && def->params.size() == out.args.size()) {
@@ -1364,8 +1369,8 @@ Node resolve(const Node& n, const Definitions& defs, int depth) {
         args[def->params[i]] = &out.args[i];
         at_params = at_params && out.args[i].kind == NodeKind::Symbol && out.args[i].text == def->params[i];
       }
-      const Node& body = !at_params && def->at_point ? *def->at_point : *def->body;
-      Node r = resolve(substitute_params(body, args), defs, depth + 1);
+      const Node& body = (!at_params || in_integral) && def->at_point ? *def->at_point : *def->body;
+      Node r = resolve(substitute_params(body, args), defs, depth + 1, in_integral);
       r.parenthesized = true;
       r.pos = n.pos;
       return r;
