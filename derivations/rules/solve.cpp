@@ -9,9 +9,11 @@
 //     (solve_roots.cpp).
 //   - A claim that is not `u = ...` for an unknown must follow from the equations.
 #include <algorithm>
+#include <functional>
 #include <optional>
 
 #include "derivations/core/prove_detail.hpp"
+#include "derivations/core/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/elimination.hpp"
 #include "derivations/rules/follows.hpp"
@@ -126,18 +128,48 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
     ex G = u.in(c, sd[k]);
     if (G.has(lhs)) c.fail(c.s.claim_pos, "the claimed solution for '" + c.text(u.out(c, lhs)) + "' contains it");
     std::vector<Eq> back;
-    for (const auto& e : E) back.push_back({e.subs(lhs == G), ex(), ""});
+    // (through the atoms: y(T) stands as an atom, and the claim must reach inside it: y(G))
+    for (const auto& e : E) back.push_back({c.atoms(c.atoms.restore(e).subs(lhs == G)), ex(), ""});
+    // A function value at the unknown, y(T) in `y(T) = v0*sin(theta)*T - g*T^2/2 = 0`, is an
+    // intermediate: the chain's first link only names it (with T = G put in it is y(G), a value
+    // the equations determine, not a random one).
+    std::vector<ex> apps, apps_orig;
+    std::function<void(const ex&)> at_unknown = [&](const ex& e) {
+      if (pool_function_index(e) >= 0 && e.has(lhs)) {
+        const ex app = c.atoms(e.subs(lhs == G));
+        if (!has_any(app, apps)) apps.push_back(app), apps_orig.push_back(c.atoms(e));
+        return;
+      }
+      for (std::size_t i = 0; i < e.nops(); ++i) at_unknown(e.op(i));
+    };
+    for (const auto& e : E) at_unknown(c.atoms.restore(e));
     // Quantities of the equations that the claim does not mention (v1, dh in the ballistic
     // pendulum) are intermediate: they are eliminated together with the other unknowns.
     // A quantity counts as intermediate when it links at least two of the equations (a
     // parameter such as g in a single equation is not eliminated: that would use the equation
-    // up instead of checking it).
+    // up instead of checking it). An equation that only names a function value y(T) (the one
+    // equation it appears in) does not count as a link.
     std::vector<ex> elim = others, in_eqs;
-    for (const auto& q : back) in_eqs.push_back(q.e);
+    std::vector<const Eq*> linking;
+    for (const auto& q : back) {
+      in_eqs.push_back(q.e);
+      bool names_value = false;
+      for (const auto& a : apps) {
+        int n = 0;
+        for (const auto& r : back) n += r.e.has(a) ? 1 : 0;
+        names_value = names_value || (n == 1 && q.e.has(a));
+      }
+      if (!names_value) linking.push_back(&q);
+    }
     for (const auto& sym : c.symbols_in(in_eqs)) {
       int count = 0;
-      for (const auto& q : back) count += q.e.has(sym) ? 1 : 0;
+      for (const Eq* q : linking) count += q->e.has(sym) ? 1 : 0;
       if (count >= 2 && !G.has(sym) && !has_any(sym, elim)) elim.push_back(sym);
+    }
+    std::vector<ex> elim_roots = elim;   // the same intermediates before G is put in (only_root)
+    for (std::size_t i = 0; i < apps.size(); ++i) {
+      if (!has_any(apps[i], elim)) elim.push_back(apps[i]);
+      if (!has_any(apps_orig[i], elim_roots)) elim_roots.push_back(apps_orig[i]);
     }
     Reduction red = reduce(c, back, ex(0), elim, true);
     int checked = 0;
@@ -184,7 +216,7 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
     }
     // ... and no other root may lie in the domain (y = w from y^2 = w^2 with y real is false at y = -w)
     std::string how;
-    Verdict only = only_root(c, u, eqs, which, G, elim, how);
+    Verdict only = only_root(c, u, eqs, which, G, elim_roots, how);
     all.add(only, "", true);
     if (only.kind == VerdictKind::Refuted) root_note = " (another root lies in the declared domain)";
     else if (!only.holds()) root_note = " (other roots are not excluded)";
