@@ -1,15 +1,19 @@
-// The certified automatic mode's fast first try (numeric/certified_fast.hpp: the tape in long
-// double with a running error bound) against the plain double tape, per point, on the handout
-// formulas that bench/peers times. Points: seeded, uniform in [0.5, 5] for every parameter (e in
+// The certified automatic mode's fast stages against plain double, on the handout formulas that
+// bench/peers times: per point, the long double tape with a running error bound
+// (numeric/certified_fast.hpp) against the double tape; over a batch, the double-double stage
+// with its long double fallback (numeric/certified_batch.hpp) against the double tape's batch
+// and the JIT (the default fast path). Points: seeded, uniform in [0.5, 5] for every parameter (e in
 // [0.05, 0.95]), kept where the double tape gives a finite value. The counter `escalated` is the
-// fraction of points where the fast try cannot decide the rounding and the Arb enclosure would
-// take over (the benchmark times the fast try only). Figures: docs/performance.md.
+// fraction of points where the fast stages cannot decide the rounding and the Arb enclosure would
+// take over (the benchmark times the fast stages only); `long_double` the fraction the batch's
+// second stage decided. Figures: docs/performance.md.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <random>
 
 #include "derivations/core/derivation.hpp"
+#include "numeric/certified_batch.hpp"
 #include "numeric/certified_fast.hpp"
 #include "numeric/evaluator.hpp"
 
@@ -31,6 +35,7 @@ struct Data {
   dc::num::Program prog;
   std::size_t k = 0;
   std::vector<double> pts;   // row-major kPoints x k
+  std::vector<std::vector<double>> cols;   // the same points as columns
   explicit Data(const Case& c) {
     const dc::Derivation d =
         dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/derivations/handout9/" + c.file);
@@ -45,6 +50,14 @@ struct Data {
       for (std::size_t j = 0; j < k; ++j) x[j] = f.params[j].get_name() == "e" ? ue(rng) : u(rng);
       if (std::isfinite(ev(x.data()))) pts.insert(pts.end(), x.begin(), x.end());
     }
+    cols.assign(k, std::vector<double>(kPoints));
+    for (std::size_t i = 0; i < kPoints; ++i)
+      for (std::size_t j = 0; j < k; ++j) cols[j][i] = pts[i * k + j];
+  }
+  std::vector<const double*> columns() const {
+    std::vector<const double*> c;
+    for (const auto& v : cols) c.push_back(v.data());
+    return c;
   }
 };
 
@@ -85,8 +98,46 @@ void BM_certified_fast(benchmark::State& st) {
   st.counters["escalated"] = total ? static_cast<double>(escalated) / static_cast<double>(total) : 0;
 }
 
+// plain double over the batch: the tape's block loop, and the JIT (eval_batch)
+void BM_plain_double_batch(benchmark::State& st, bool jit) {
+  const Data& D = data(static_cast<std::size_t>(st.range(0)));
+  st.SetLabel(std::string(kCases[st.range(0)].label) + (jit ? " (JIT)" : " (tape)"));
+  dc::num::Evaluator<double> ev(D.prog);
+  const std::vector<const double*> cols = D.columns();
+  std::vector<double> out(kPoints);
+  if (jit) ev.eval_batch(cols.data(), out.data(), kPoints);   // compiles outside the timing
+  for (auto _ : st) {
+    if (jit) ev.eval_batch(cols.data(), out.data(), kPoints);
+    else ev.eval_batch_tape(cols.data(), out.data(), kPoints);
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+}
+void BM_plain_double_tape_batch(benchmark::State& st) { BM_plain_double_batch(st, false); }
+void BM_plain_double_jit(benchmark::State& st) { BM_plain_double_batch(st, true); }
+
+void BM_certified_batch(benchmark::State& st) {
+  const Data& D = data(static_cast<std::size_t>(st.range(0)));
+  st.SetLabel(kCases[st.range(0)].label);
+  const dc::num::CertifiedBatch batch(D.prog);
+  const std::vector<const double*> cols = D.columns();
+  std::vector<double> out(kPoints);
+  std::vector<dc::num::CertifiedStage> stage(kPoints);
+  dc::num::CertifiedBatchStats s;
+  for (auto _ : st) {
+    s = batch.eval(cols.data(), nullptr, kPoints, out.data(), stage.data());
+    benchmark::DoNotOptimize(out.data());
+  }
+  st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));
+  st.counters["long_double"] = static_cast<double>(s.long_double) / kPoints;
+  st.counters["escalated"] = static_cast<double>(s.undecided) / kPoints;
+}
+
 }  // namespace
 
 BENCHMARK(BM_plain_double)->DenseRange(0, std::size(kCases) - 1);
 BENCHMARK(BM_certified_fast)->DenseRange(0, std::size(kCases) - 1);
+BENCHMARK(BM_plain_double_tape_batch)->DenseRange(0, std::size(kCases) - 1);
+BENCHMARK(BM_plain_double_jit)->DenseRange(0, std::size(kCases) - 1);
+BENCHMARK(BM_certified_batch)->DenseRange(0, std::size(kCases) - 1);
 BENCHMARK_MAIN();

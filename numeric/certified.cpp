@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "derivations/kernel/ball.hpp"
+#include "numeric/certified_batch.hpp"
 #include "numeric/certified_fast.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/exact.hpp"
@@ -85,8 +86,9 @@ std::string values_text(const std::vector<std::pair<std::string, numeric>>& v) {
   return s;
 }
 
-// The fast first try of Auto: the tape in long double with a running error bound
-// (certified_fast.hpp). nullopt when it cannot decide the rounding: the caller escalates to Arb.
+// The fast first try of Auto: the tape in double-double, then in long double, each with a
+// running error bound (certified_batch.hpp, certified_fast.hpp). nullopt when neither can decide
+// the rounding: the caller escalates to Arb.
 std::optional<CertifiedDouble> fast_first_try(const Derivation& d, const Formula& f, const GiNaC::exmap& point) {
   std::vector<double> x, x_err;
   for (const auto& s : f.params) {
@@ -99,13 +101,30 @@ std::optional<CertifiedDouble> fast_first_try(const Derivation& d, const Formula
     x_err.push_back(err == 0 ? 0 : std::nextafter(err * (1 + 0x1p-40), std::numeric_limits<double>::infinity()) +
                                        std::numeric_limits<double>::denorm_min());
   }
-  std::optional<CertifiedTape> tape;
+  std::optional<CertifiedBatch> batch;
   try {
-    tape.emplace(compile(f.expr, f.params));
+    batch.emplace(compile(f.expr, f.params));
   } catch (const std::exception&) {
     return std::nullopt;   // not compilable to a tape: Arb evaluates it
   }
-  const FastCertified r = (*tape)(x.data(), x_err.data());
+  std::vector<const double*> cols, errs;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    cols.push_back(&x[i]);
+    errs.push_back(&x_err[i]);
+  }
+  double hi = 0, lo = 0, e = 0;
+  batch->eval_dd_block(cols.data(), errs.data(), 0, 1, &hi, &lo, &e);
+  if (const std::optional<double> v = round_certified(hi, lo, e); v && std::isfinite(*v)) {
+    CertifiedDouble out;
+    out.value = *v;
+    char bound[32];
+    std::snprintf(bound, sizeof bound, "%.1e", e);
+    out.method = std::string("auto (correctly rounded: double-double with a running error bound, ") + bound + ")";
+    out.error_ulps = 0.5;
+    if (*v == 0 && hi != 0) out.note = "the true value rounds to 0 (below half the smallest subnormal)";
+    return out;
+  }
+  const FastCertified r = batch->long_double_stage()(x.data(), x_err.data());
   if (!r.decided) return std::nullopt;
   CertifiedDouble out;
   out.value = r.value;

@@ -4,10 +4,11 @@
 // true value (derivations/kernel/ball.hpp, the layer the checker uses): the bound holds whatever
 // libm, the tape or the compiler did, because it is computed a posteriori from the enclosure.
 //
-//   Auto         the double nearest the true value at the written (exact) point: the enclosure
-//                is narrowed until both of its ends round to the same double, which is then the
-//                correctly rounded result (bound 0.5 ulp). Not yet a fast first try with
-//                escalation: every call pays for the enclosure (milliseconds).
+//   Auto         the double nearest the true value at the written (exact) point (bound 0.5
+//                ulp): the tape in double-double, then in long double, each with a running
+//                error bound (certified_batch.hpp, certified_fast.hpp), decides where both ends
+//                of its interval round to the same double; elsewhere an Arb enclosure is
+//                narrowed until they do (milliseconds).
 //   Double       the formula's tape in double        } at the inputs rounded to the nearest
 //   LongDouble   the formula's tape in long double   } double; the bound is against the true
 //   Compensated  the tapes in double-double          } value at those rounded inputs

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "numeric/certified_steps.hpp"
+
 namespace dc::num {
+namespace certified {
 namespace {
 
 using LD = long double;
@@ -12,22 +15,14 @@ using LD = long double;
 constexpr LD kU = 0x1p-64L;                 // unit roundoff of the 64-bit significand
 constexpr LD kEta = 0x1p-16445L;            // smallest subnormal long double
 constexpr LD kLib = 8 * 0x1p-63L;           // 8 ulps of a libm result, relative
-constexpr LD kSafe = 1 + 0x1p-50L;          // covers the roundings of the bound arithmetic
-constexpr LD kInf = std::numeric_limits<LD>::infinity();
-
 
 LD rounding(LD v) { return kU * std::fabs(v) + kEta; }
 LD library(LD v) { return kLib * std::fabs(v) + 8 * kEta; }
 
-// An upper bound of |f(x') - f(a)| for every x' with |x' - a| <= ea, plus the error of computing
-// f(a) as v; fail(reason) when no bound is available.
-struct Step {
-  LD v, e;
-  const char* why = nullptr;   // set when no bound is available (v and e are then meaningless)
-};
 Step fail(const char* why) { return {0, 0, why}; }
 
-Step unary(Op op, LD a, LD ea) {
+// (inlined into the tape's loop; unary() and binary() below are the same for other callers)
+Step unary_step(Op op, LD a, LD ea) {
   using std::fabs, std::sqrt;
   switch (op) {
     case Op::Neg: return {-a, ea};
@@ -91,7 +86,7 @@ Step unary(Op op, LD a, LD ea) {
   return fail("unsupported operation");
 }
 
-Step binary(Op op, LD a, LD ea, LD b, LD eb) {
+Step binary_step(Op op, LD a, LD ea, LD b, LD eb) {
   using std::fabs;
   switch (op) {
     case Op::Add: { const LD v = a + b; return {v, ea + eb + rounding(v)}; }
@@ -127,6 +122,15 @@ Step binary(Op op, LD a, LD ea, LD b, LD eb) {
 
 }  // namespace
 
+Step unary(Op op, LD a, LD ea) { return unary_step(op, a, ea); }
+Step binary(Op op, LD a, LD ea, LD b, LD eb) { return binary_step(op, a, ea, b, eb); }
+
+}  // namespace certified
+
+using certified::kSafe;
+using LD = long double;
+constexpr LD kInf = std::numeric_limits<LD>::infinity();
+
 CertifiedTape::CertifiedTape(Program p) : prog_(std::move(p)) {
   v_.assign(prog_.n_registers, 0);
   e_.assign(prog_.n_registers, 0);
@@ -149,7 +153,8 @@ FastCertified CertifiedTape::operator()(const double* x, const double* x_err) co
   }
   for (std::size_t i = 0; i < prog_.code.size(); ++i) {
     const Instr& in = prog_.code[i];
-    const Step st = binary_[i] ? binary(in.op, v[in.a], e[in.a], v[in.b], e[in.b]) : unary(in.op, v[in.a], e[in.a]);
+    const certified::Step st = binary_[i] ? certified::binary_step(in.op, v[in.a], e[in.a], v[in.b], e[in.b])
+                                           : certified::unary_step(in.op, v[in.a], e[in.a]);
     if (st.why || !std::isfinite(st.v) || !std::isfinite(st.e)) {
       out.why_not = st.why ? st.why : "a value or bound beyond long double's range";
       return out;
