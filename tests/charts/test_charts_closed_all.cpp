@@ -46,7 +46,7 @@ TEST_CASE("closed forms, all formulas: every compilable handout formula is chart
   for (const auto& [f, methods] : m) {
     INFO(f);
     for (const char* want : {"CLN 15 digits", "CLN 30 digits", "CLN 50 digits", "CLN 100 digits", "double (evaluator)",
-                             "long double (evaluator)", "compensated (double-double)"})
+                             "long double (evaluator)", "compensated (double-double)", "certified auto"})
       CHECK(methods.count(want) == 1);
   }
   // the file's stable forms and the hand-written speed limit appear where they exist
@@ -81,4 +81,22 @@ TEST_CASE("closed forms, all formulas: CLN at 50 digits is within 1e-40 relative
   // inputs rounded to 50 digits cancel in the naive forms at stress points (e.g. the energy
   // loss as T_before - T_after with masses near 1e300): the chart shows those outliers
   CHECK(stress_failures >= 1);
+}
+
+TEST_CASE("closed forms, all formulas: the certified mode is correctly rounded at every point", "[charts][closed_all]") {
+  // crosscheck's random and stress points, exact doubles: `eval --method auto` (double-double,
+  // long double, Arb) is within half an ulp of the reference wherever that is a finite double
+  std::size_t formulas = 0, worse_double = 0;
+  for (const auto& [f, methods] : by_formula()) {
+    INFO(f);
+    const WpRow& c = methods.at("certified auto");
+    const WpRow& d = methods.at("double (evaluator)");
+    if (!std::isfinite(c.ulps_max)) continue;   // a point whose true value is not a finite double
+    ++formulas;
+    CHECK(c.ulps_max <= 0.5 + 1e-9);
+    worse_double += d.ulps_max > 0.5 + 1e-9 ? 1 : 0;
+  }
+  INFO(formulas << " formulas; plain double misses half an ulp on " << worse_double);
+  CHECK(formulas >= 90);
+  CHECK(worse_double >= 30);
 }
