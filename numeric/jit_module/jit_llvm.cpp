@@ -3,6 +3,7 @@
 // functions as calls to SLEEF. One LLJIT per kernel: the kernel owns its code and frees it with
 // itself, and kernels compiled on different threads share nothing.
 #include <array>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -98,8 +99,25 @@ int sleef_index(Op op) {
   }
 }
 
+// For a division by a constant +-2^k: 2^-k (exact), else 0.
+double power_of_two_reciprocal(const Program& p, const Instr& in) {
+  if (in.op != Op::Div || in.b < p.n_inputs() || in.b >= p.first_temp()) return 0;
+  const double c = p.const_double[in.b - p.n_inputs()];
+  int e = 0;
+  if (!std::isfinite(c) || c == 0 || std::fabs(std::frexp(c, &e)) != 0.5) return 0;
+  const double r = 1.0 / c;   // 2^(1 - e): exact when it is a double (normal or subnormal)
+  return r != 0 && std::isfinite(r) && r * c == 1.0 ? r : 0;
+}
+
 // void dc_kernel(const double* const* columns, double* out, i64 n), n a multiple of W:
 //   for (i = 0; i < n; i += W) out[i..i+W) = program(columns[0][i..i+W), ...)
+// The main loop takes kUnroll vectors per iteration and emits each tape instruction for all of
+// them before the next instruction: the vectors' dependency chains (a division's latency, a
+// SLEEF call) are independent, so the CPU overlaps them instead of waiting on one chain per
+// iteration. A loop of single vectors takes the rest. Every lane computes exactly what the
+// tape computes, in the same order, so the results do not depend on the unrolling.
+constexpr unsigned kUnroll = 4;
+
 std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
                                    llvm::LLVMContext& ctx) {
   using namespace llvm;
@@ -107,7 +125,8 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
   IRBuilder<> b(ctx);
   Type* dbl = b.getDoubleTy();
   Type* i64 = b.getInt64Ty();
-  auto* vec = FixedVectorType::get(dbl, static_cast<unsigned>(isa.width));
+  const auto width = static_cast<unsigned>(isa.width);
+  auto* vec = FixedVectorType::get(dbl, width);
   PointerType* dptr = PointerType::getUnqual(dbl);
   PointerType* dptrptr = PointerType::getUnqual(dptr);
   auto* fty = FunctionType::get(b.getVoidTy(), {dptrptr, dptr, i64}, false);
@@ -122,6 +141,8 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
   BasicBlock* entry = BasicBlock::Create(ctx, "entry", f);
   BasicBlock* head = BasicBlock::Create(ctx, "head", f);
   BasicBlock* body = BasicBlock::Create(ctx, "body", f);
+  BasicBlock* tail_head = BasicBlock::Create(ctx, "tail_head", f);
+  BasicBlock* tail = BasicBlock::Create(ctx, "tail", f);
   BasicBlock* exit = BasicBlock::Create(ctx, "exit", f);
 
   b.SetInsertPoint(entry);
@@ -131,19 +152,7 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
     colp[j] = b.CreateAlignedLoad(dptr, b.CreateConstInBoundsGEP1_64(dptr, cols, j), Align(8), "col");
   b.CreateBr(head);
 
-  b.SetInsertPoint(head);
-  PHINode* i = b.CreatePHI(i64, 2, "i");
-  i->addIncoming(b.getInt64(0), entry);
-  b.CreateCondBr(b.CreateICmpULT(i, n), body, exit);
-
-  b.SetInsertPoint(body);
-  std::vector<Value*> reg(p.n_registers, nullptr);
-  for (std::size_t j = 0; j < nin; ++j)
-    reg[j] = b.CreateAlignedLoad(vec, b.CreateBitCast(b.CreateInBoundsGEP(dbl, colp[j], i), PointerType::getUnqual(vec)),
-                                 Align(8), "x");
-  for (std::size_t c = 0; c < p.const_double.size(); ++c)
-    reg[nin + c] = ConstantVector::getSplat(ElementCount::getFixed(static_cast<unsigned>(isa.width)),
-                                            ConstantFP::get(dbl, p.const_double[c]));
+  auto splat = [&](double x) { return ConstantVector::getSplat(ElementCount::getFixed(width), ConstantFP::get(dbl, x)); };
   auto sleef = [&](int k, int arity) -> FunctionCallee {
     std::vector<Type*> args(static_cast<std::size_t>(arity), vec);
     FunctionCallee fc = mod->getOrInsertFunction(isa.fns[static_cast<std::size_t>(k)].symbol,
@@ -153,49 +162,87 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
     decl->setDoesNotAccessMemory();  // pure: no errno, no state
     return fc;
   };
-  for (const Instr& in : p.code) {
-    Value* a = reg[in.a];
-    Value* c = arity(in.op) == 2 ? reg[in.b] : nullptr;
-    Value* r = nullptr;
+  // One tape instruction on one vector.
+  auto apply = [&](const Instr& in, Value* a, Value* c) -> Value* {
     switch (in.op) {
-      case Op::Add: r = b.CreateFAdd(a, c); break;
-      case Op::Sub: r = b.CreateFSub(a, c); break;
-      case Op::Mul: r = b.CreateFMul(a, c); break;
-      case Op::Div: r = b.CreateFDiv(a, c); break;
-      case Op::Neg: r = b.CreateFNeg(a); break;
-      case Op::Sqrt: r = b.CreateUnaryIntrinsic(Intrinsic::sqrt, a); break;
-      case Op::Abs: r = b.CreateUnaryIntrinsic(Intrinsic::fabs, a); break;
-      default: {
-        const int k = sleef_index(in.op);
-        r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
-        if (in.op == Op::Log1p) {
-          // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and
-          // log(x) is log1p(x) to within 1e-300 relative. Lanes above 1e300 (rare: a branch
-          // over the fix-up, not a second call per vector) take log(x).
-          Value* big = b.CreateFCmpOGT(a, ConstantVector::getSplat(ElementCount::getFixed(static_cast<unsigned>(isa.width)),
-                                                                   ConstantFP::get(dbl, 1e300)));
-          Value* any = b.CreateOrReduce(big);
-          BasicBlock* from = b.GetInsertBlock();
-          BasicBlock* fix = BasicBlock::Create(ctx, "log1p_big", f, exit);
-          BasicBlock* cont = BasicBlock::Create(ctx, "log1p_cont", f, exit);
-          b.CreateCondBr(any, fix, cont);
-          b.SetInsertPoint(fix);
-          Value* l = b.CreateSelect(big, b.CreateCall(sleef(sleef_index(Op::Log), 1), {a}), r);
-          b.CreateBr(cont);
-          b.SetInsertPoint(cont);
-          PHINode* phi = b.CreatePHI(vec, 2);
-          phi->addIncoming(r, from);
-          phi->addIncoming(l, fix);
-          r = phi;
-        }
-      }
+      case Op::Add: return b.CreateFAdd(a, c);
+      case Op::Sub: return b.CreateFSub(a, c);
+      case Op::Mul: return b.CreateFMul(a, c);
+      case Op::Div: return b.CreateFDiv(a, c);
+      case Op::Neg: return b.CreateFNeg(a);
+      case Op::Sqrt: return b.CreateUnaryIntrinsic(Intrinsic::sqrt, a);
+      case Op::Abs: return b.CreateUnaryIntrinsic(Intrinsic::fabs, a);
+      default: break;
     }
-    reg[in.dst] = r;
-  }
-  b.CreateAlignedStore(reg[p.result], b.CreateBitCast(b.CreateInBoundsGEP(dbl, out, i), PointerType::getUnqual(vec)),
-                       Align(8));
-  i->addIncoming(b.CreateAdd(i, b.getInt64(static_cast<std::uint64_t>(isa.width))), b.GetInsertBlock());
+    const int k = sleef_index(in.op);
+    Value* r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
+    if (in.op == Op::Log1p) {
+      // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and
+      // log(x) is log1p(x) to within 1e-300 relative. Lanes above 1e300 (rare: a branch
+      // over the fix-up, not a second call per vector) take log(x).
+      Value* big = b.CreateFCmpOGT(a, splat(1e300));
+      Value* any = b.CreateOrReduce(big);
+      BasicBlock* from = b.GetInsertBlock();
+      BasicBlock* fix = BasicBlock::Create(ctx, "log1p_big", f, tail_head);
+      BasicBlock* cont = BasicBlock::Create(ctx, "log1p_cont", f, tail_head);
+      b.CreateCondBr(any, fix, cont);
+      b.SetInsertPoint(fix);
+      Value* l = b.CreateSelect(big, b.CreateCall(sleef(sleef_index(Op::Log), 1), {a}), r);
+      b.CreateBr(cont);
+      b.SetInsertPoint(cont);
+      PHINode* phi = b.CreatePHI(vec, 2);
+      phi->addIncoming(r, from);
+      phi->addIncoming(l, fix);
+      r = phi;
+    }
+    return r;
+  };
+  // The program on `u` vectors at points i, i + W, ...: instruction by instruction.
+  auto program = [&](Value* i, unsigned u) {
+    std::vector<std::vector<Value*>> reg(u, std::vector<Value*>(p.n_registers, nullptr));
+    std::vector<Value*> at(u);
+    for (unsigned v = 0; v < u; ++v) at[v] = v ? b.CreateAdd(i, b.getInt64(std::uint64_t{v} * width)) : i;
+    for (unsigned v = 0; v < u; ++v) {
+      for (std::size_t j = 0; j < nin; ++j)
+        reg[v][j] = b.CreateAlignedLoad(vec, b.CreateBitCast(b.CreateInBoundsGEP(dbl, colp[j], at[v]), PointerType::getUnqual(vec)),
+                                        Align(8), "x");
+      for (std::size_t c = 0; c < p.const_double.size(); ++c) reg[v][nin + c] = splat(p.const_double[c]);
+    }
+    for (const Instr& in : p.code) {
+      // x / 2^k is x * 2^-k exactly (both are x / 2^k correctly rounded; 2^-k is a double for
+      // every double 2^k): a multiplication instead of a division's latency
+      if (const double r = power_of_two_reciprocal(p, in); r != 0) {
+        for (unsigned v = 0; v < u; ++v) reg[v][in.dst] = b.CreateFMul(reg[v][in.a], splat(r));
+        continue;
+      }
+      for (unsigned v = 0; v < u; ++v)
+        reg[v][in.dst] = apply(in, reg[v][in.a], arity(in.op) == 2 ? reg[v][in.b] : nullptr);
+    }
+    for (unsigned v = 0; v < u; ++v)
+      b.CreateAlignedStore(reg[v][p.result], b.CreateBitCast(b.CreateInBoundsGEP(dbl, out, at[v]), PointerType::getUnqual(vec)),
+                           Align(8));
+  };
+
+  // main loop: kUnroll vectors while i + kUnroll W <= n
+  const std::uint64_t step = std::uint64_t{kUnroll} * width;
+  b.SetInsertPoint(head);
+  PHINode* i = b.CreatePHI(i64, 2, "i");
+  i->addIncoming(b.getInt64(0), entry);
+  b.CreateCondBr(b.CreateICmpULE(b.CreateAdd(i, b.getInt64(step)), n), body, tail_head);
+  b.SetInsertPoint(body);
+  program(i, kUnroll);
+  i->addIncoming(b.CreateAdd(i, b.getInt64(step)), b.GetInsertBlock());
   b.CreateBr(head);
+
+  // the rest, one vector at a time
+  b.SetInsertPoint(tail_head);
+  PHINode* t = b.CreatePHI(i64, 2, "t");
+  t->addIncoming(i, head);
+  b.CreateCondBr(b.CreateICmpULT(t, n), tail, exit);
+  b.SetInsertPoint(tail);
+  program(t, 1);
+  t->addIncoming(b.CreateAdd(t, b.getInt64(width)), b.GetInsertBlock());
+  b.CreateBr(tail_head);
 
   b.SetInsertPoint(exit);
   b.CreateRetVoid();

@@ -202,7 +202,8 @@ TEST_CASE("JIT: handout formulas at lengths around the width, on every instructi
       }
       INFO(isa << ", W = " << kern->width());
       const std::size_t w = static_cast<std::size_t>(kern->width());
-      for (std::size_t n : {std::size_t{0}, std::size_t{1}, w - 1, w, w + 1, nmax}) {
+      // around the width, and around the main loop's 4 vectors per iteration
+      for (std::size_t n : {std::size_t{0}, std::size_t{1}, w - 1, w, w + 1, 4 * w - 1, 4 * w, 4 * w + 1, 9 * w + 3, nmax}) {
         INFO("n = " << n);
         const auto got = run(*kern, cols, n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -347,5 +348,28 @@ TEST_CASE("JIT: programs whose result is an input or a constant, no inputs, many
       for (double& v : c) v = logu(rng, -3, 3);
     const auto got = run(*jit_of(p), cols, n), want = tape(p, cols, n);
     for (std::size_t i = 0; i < n; ++i) CHECK(same_bits(got[i], want[i]));
+  }
+}
+
+TEST_CASE("JIT: a division by a power of two is the tape's division, bit for bit", "[numeric][jit]") {
+  // the JIT multiplies by the exact reciprocal 2^-k; that is the same correctly rounded value,
+  // subnormal results and the reciprocals of 2^1023 and 2^-1022 included; other divisors divide
+  if (!jit_enabled()) { WARN("no JIT in this build"); return; }
+  const std::size_t n = 203;
+  std::vector<std::vector<double>> cols{std::vector<double>(n)};
+  std::mt19937_64 rng(12);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double mag = logu(rng, -320, 308);
+    cols[0][i] = (i % 2 ? -1 : 1) * (i % 17 == 0 ? std::numeric_limits<double>::denorm_min() * static_cast<double>(i) : mag);
+  }
+  for (const ex& c : {ex(2), ex(-4), GiNaC::pow(ex(2), 1023), GiNaC::pow(ex(2), -1022), ex(GiNaC::numeric(1, 8)), ex(3),
+                      ex(GiNaC::numeric(1, 10))}) {
+    INFO("x / " << c);
+    const Program p = compile(x / c, {x});
+    const auto got = run(*jit_of(p), cols, n), want = tape(p, cols, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      INFO("x = " << cols[0][i]);
+      CHECK(same_bits(got[i], want[i]));
+    }
   }
 }
