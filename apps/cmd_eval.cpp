@@ -96,39 +96,82 @@ int run_points(const EvalOptions& o) {
   const Derivation d = load_derivation(o.file);
   (void)formula(d, o.label);   // an unknown label is an input error before any row runs
 
+  // each row's text as --at takes it ("" when the row has the wrong number of cells)
+  std::vector<std::string> ats(lines.size());
+  for (std::size_t row = 1; row < lines.size(); ++row) {
+    const std::vector<std::string> cells = split_csv_line(lines[row]);
+    if (cells.size() != header.size()) continue;
+    for (std::size_t i = 0; i < header.size(); ++i) ats[row] += (i ? "," : "") + header[i] + "=" + cells[i];
+  }
+  auto answer_fields = [](const Answer& a) {
+    return csv_field(a.value) + "," + csv_field(a.method) + "," + csv_field(a.bound) + "," + csv_field(a.note);
+  };
+  // auto: the double-double stage for every row at once, in this process (no loop, no unbounded
+  // work); it gives exactly what the row's worker would have given from that stage. The other
+  // rows (later stages, Arb, errors) go to the workers under the budget.
+  std::vector<std::string> payload(lines.size());
+  std::vector<bool> answered(lines.size(), false);
+  if (o.method == "auto") {
+    std::vector<std::size_t> rows;
+    std::vector<std::vector<std::pair<std::string, GiNaC::numeric>>> points;
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+      if (ats[row].empty()) continue;
+      try {
+        points.push_back(num::parse_assignments(ats[row]));
+        rows.push_back(row);
+      } catch (const std::exception&) {
+        // malformed value: the worker reports it
+      }
+    }
+    const auto first = num::certified_auto_first_stage(d, o.label, points);
+    for (std::size_t j = 0; j < rows.size(); ++j) {
+      if (!first[j]) continue;
+      Answer a;
+      a.value = num::shortest_text(first[j]->value);
+      a.method = first[j]->method;
+      a.bound = bound_text(first[j]->error_ulps);
+      a.note = first[j]->note;
+      payload[rows[j]] = answer_fields(a);
+      answered[rows[j]] = true;
+    }
+  }
+
   exec::RunOptions run = o.budget.resolve();
-  exec::Pool pool(run.jobs, run.budget, [&](const std::string& row) -> std::string {
-    std::vector<std::string> cells = split_csv_line(row);
-    std::string at;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i) at += (i ? "," : "") + header[i] + "=" + cells[i];
+  exec::Pool pool(run.jobs, run.budget, [&](const std::string& task) -> std::string {
+    const std::size_t row = std::stoul(task);
+    const std::vector<std::string> cells = split_csv_line(lines[row]);
     try {
       if (cells.size() != header.size())
         throw std::invalid_argument(std::to_string(cells.size()) + " values for " + std::to_string(header.size()) + " columns");
-      Answer a = evaluate(d, o, at);
-      return csv_field(a.value) + "," + csv_field(a.method) + "," + csv_field(a.bound) + "," + csv_field(a.note);
+      return answer_fields(evaluate(d, o, ats[row]));
     } catch (const std::exception& e) {
       return ",,," + csv_field(std::string("error: ") + e.what());
     }
   });
+  std::size_t next = 1;
+  std::vector<std::size_t> sent;   // rows in the order their tasks went out (outcomes come back in it)
+  std::size_t back = 0;
+  pool.run(
+      [&](std::string& task) {
+        while (next < lines.size() && answered[next]) ++next;
+        if (next >= lines.size()) return false;
+        sent.push_back(next);
+        task = std::to_string(next++);
+        return true;
+      },
+      [&](exec::Outcome&& r) {
+        payload[sent[back++]] = r.done() ? r.payload : ",,," + csv_field("undecided: " + r.reason);
+      });
   std::string out;
   for (const auto& h : header) out += csv_field(h) + ",";
   out += "value,method,error_bound,note\n";
-  std::size_t next = 1;
   int failed = 0;
-  pool.run(
-      [&](std::string& task) {
-        if (next >= lines.size()) return false;
-        task = lines[next++];
-        return true;
-      },
-      [&, row = std::size_t{1}](exec::Outcome&& r) mutable {
-        std::string cells;
-        for (const auto& c : split_csv_line(lines[row])) cells += csv_field(c) + ",";
-        ++row;
-        std::string result = r.done() ? r.payload : ",,," + csv_field("undecided: " + r.reason);
-        if (result.rfind(",,,", 0) == 0) ++failed;
-        out += cells + result + "\n";
-      });
+  for (std::size_t row = 1; row < lines.size(); ++row) {
+    std::string cells;
+    for (const auto& c : split_csv_line(lines[row])) cells += csv_field(c) + ",";
+    if (payload[row].rfind(",,,", 0) == 0) ++failed;
+    out += cells + payload[row] + "\n";
+  }
   if (o.output.empty() || o.output == "-") std::cout << out;
   else write_file_atomic(o.output, out);
   std::cerr << "eval: " << lines.size() - 1 << " points, " << failed << " without a value\n";

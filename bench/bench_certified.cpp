@@ -125,7 +125,7 @@ void BM_certified_batch(benchmark::State& st) {
   std::vector<dc::num::CertifiedStage> stage(kPoints);
   dc::num::CertifiedBatchStats s;
   for (auto _ : st) {
-    s = batch.eval(cols.data(), nullptr, kPoints, out.data(), stage.data());
+    s = batch.eval({cols.data()}, kPoints, out.data(), stage.data());
     benchmark::DoNotOptimize(out.data());
   }
   st.SetItemsProcessed(static_cast<std::int64_t>(st.iterations() * kPoints));

@@ -86,45 +86,76 @@ std::string values_text(const std::vector<std::pair<std::string, numeric>>& v) {
   return s;
 }
 
-// The fast first try of Auto: the tape in double-double, then in long double, each with a
-// running error bound (certified_batch.hpp, certified_fast.hpp). nullopt when neither can decide
-// the rounding: the caller escalates to Arb.
-std::optional<CertifiedDouble> fast_first_try(const Derivation& d, const Formula& f, const GiNaC::exmap& point) {
-  std::vector<double> x, x_err;
+// The inputs of the fast stages at an exact point, in the order of f.params: each as a
+// double-double (the nearest double, the nearest double to the rest) with a bound on what is
+// left, so that a decimal such as 0.7 is known to ~2^-106 and not to half an ulp; and, for the
+// long double stage, which takes the double alone, the bound on the whole rest.
+struct FastInputs {
+  std::vector<double> x, lo, err, err_ld;
+};
+
+std::optional<FastInputs> fast_inputs(const Derivation& d, const Formula& f, const GiNaC::exmap& point) {
+  const double inf = std::numeric_limits<double>::infinity();
+  auto up = [&](const numeric& r) {   // |r| as a double, rounded up well beyond to_double's error
+    const double e = abs_num(r).to_double();
+    return e == 0 ? 0.0 : std::nextafter(e * (1 + 0x1p-40), inf) + std::numeric_limits<double>::denorm_min();
+  };
+  FastInputs in;
   for (const auto& s : f.params) {
     const numeric v = GiNaC::ex_to<numeric>(point.at(d.symbols.find(s.get_name())->sym));
     const double xd = nearest_double(v);
     if (!std::isfinite(xd)) return std::nullopt;
-    // |v - xd| as a double, rounded up well beyond to_double's own error
-    const double err = abs_num(v - exact_rational(xd)).to_double();
-    x.push_back(xd);
-    x_err.push_back(err == 0 ? 0 : std::nextafter(err * (1 + 0x1p-40), std::numeric_limits<double>::infinity()) +
-                                       std::numeric_limits<double>::denorm_min());
+    const numeric rest = v - exact_rational(xd);
+    const double xl = rest.is_zero() ? 0.0 : nearest_double(rest);
+    in.x.push_back(xd);
+    in.lo.push_back(xl);
+    in.err.push_back(up(rest - exact_rational(xl)));
+    in.err_ld.push_back(up(rest));
   }
-  std::optional<CertifiedBatch> batch;
+  return in;
+}
+
+// Stage 1 of Auto (certified_batch.hpp) at one point: the answer when it decides.
+std::optional<CertifiedDouble> double_double_stage(const CertifiedBatch& batch, const FastInputs& in) {
+  std::vector<const double*> cols, lows, errs;
+  for (std::size_t i = 0; i < in.x.size(); ++i) {
+    cols.push_back(&in.x[i]);
+    lows.push_back(&in.lo[i]);
+    errs.push_back(&in.err[i]);
+  }
+  double hi = 0, lo = 0, e = 0;
+  batch.eval_dd_block({cols.data(), lows.data(), errs.data()}, 0, 1, &hi, &lo, &e);
+  const std::optional<double> v = round_certified(hi, lo, e);
+  if (!v || !std::isfinite(*v)) return std::nullopt;   // +-inf: the long double stage says how far out
+  CertifiedDouble out;
+  out.value = *v;
+  char bound[32];
+  std::snprintf(bound, sizeof bound, "%.1e", e);
+  out.method = std::string("auto (correctly rounded: double-double with a running error bound, ") + bound + ")";
+  out.error_ulps = 0.5;
+  if (*v == 0 && hi != 0) out.note = "the true value rounds to 0 (below half the smallest subnormal)";
+  return out;
+}
+
+std::optional<CertifiedBatch> compile_batch(const Formula& f) {
   try {
-    batch.emplace(compile(f.expr, f.params));
+    return CertifiedBatch(compile(f.expr, f.params));
   } catch (const std::exception&) {
     return std::nullopt;   // not compilable to a tape: Arb evaluates it
   }
-  std::vector<const double*> cols, errs;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    cols.push_back(&x[i]);
-    errs.push_back(&x_err[i]);
-  }
-  double hi = 0, lo = 0, e = 0;
-  batch->eval_dd_block(cols.data(), errs.data(), 0, 1, &hi, &lo, &e);
-  if (const std::optional<double> v = round_certified(hi, lo, e); v && std::isfinite(*v)) {
-    CertifiedDouble out;
-    out.value = *v;
-    char bound[32];
-    std::snprintf(bound, sizeof bound, "%.1e", e);
-    out.method = std::string("auto (correctly rounded: double-double with a running error bound, ") + bound + ")";
-    out.error_ulps = 0.5;
-    if (*v == 0 && hi != 0) out.note = "the true value rounds to 0 (below half the smallest subnormal)";
-    return out;
-  }
-  const FastCertified r = batch->long_double_stage()(x.data(), x_err.data());
+}
+
+// The fast stages of Auto: the tape in double-double, then in long double, each with a running
+// error bound (certified_batch.hpp, certified_fast.hpp). nullopt when neither can decide the
+// rounding: the caller escalates to Arb.
+std::optional<CertifiedDouble> fast_first_try(const Derivation& d, const Formula& f, const GiNaC::exmap& point) {
+  const std::optional<FastInputs> in = fast_inputs(d, f, point);
+  if (!in) return std::nullopt;
+  const std::optional<CertifiedBatch> batch = compile_batch(f);
+  if (!batch) return std::nullopt;
+  if (auto r = double_double_stage(*batch, *in)) return r;
+  const std::vector<double>& x = in->x;
+  const FastCertified r = batch->long_double_stage()(x.data(), in->err_ld.data());
   if (!r.decided) return std::nullopt;
   CertifiedDouble out;
   out.value = r.value;
@@ -199,6 +230,24 @@ std::string shortest_text(double x) {
   }
   std::snprintf(buf, sizeof buf, "%.17g", x);
   return buf;
+}
+
+std::vector<std::optional<CertifiedDouble>> certified_auto_first_stage(
+    const Derivation& d, const std::string& label,
+    const std::vector<std::vector<std::pair<std::string, numeric>>>& points) {
+  std::vector<std::optional<CertifiedDouble>> out(points.size());
+  const Formula f = formula(d, label);
+  const std::optional<CertifiedBatch> batch = compile_batch(f);
+  if (!batch) return out;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    try {
+      if (const std::optional<FastInputs> in = fast_inputs(d, f, bind_point(d, f, points[i])))
+        out[i] = double_double_stage(*batch, *in);
+    } catch (const std::exception&) {
+      // does not bind (outside the domain, a missing name, ...): certified_eval says why
+    }
+  }
+  return out;
 }
 
 CertifiedDouble certified_eval(const Derivation& d, const std::string& label,

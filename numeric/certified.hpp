@@ -54,6 +54,14 @@ double nearest_double(const GiNaC::numeric& x);
 CertifiedDouble certified_eval(const Derivation& d, const std::string& label,
                                const std::vector<std::pair<std::string, GiNaC::numeric>>& at, DoubleMethod m);
 
+// The first stage of Auto for many points at once (`eval --points`): for each point (exact
+// values by name, as certified_eval takes them) the answer certified_eval(d, label, point, Auto)
+// gives when its double-double stage decides, else nullopt -- also for a point that does not
+// bind (outside the domain, a missing name): run certified_eval for those, which says why.
+std::vector<std::optional<CertifiedDouble>> certified_auto_first_stage(
+    const Derivation& d, const std::string& label,
+    const std::vector<std::vector<std::pair<std::string, GiNaC::numeric>>>& points);
+
 // The round-trip text of a double: the shortest decimal that reads back as the same double
 // ("0.1", "1e+200", "-2.5e-300", "inf").
 std::string shortest_text(double x);

@@ -249,17 +249,18 @@ CertifiedBatch::CertifiedBatch(Program p) : prog_(std::move(p)), tape_(prog_) {
   }
 }
 
-void CertifiedBatch::eval_dd_block(const double* const* columns, const double* const* errors, std::size_t offset,
-                                   std::size_t n, double* hi, double* lo, double* bound) const {
+void CertifiedBatch::eval_dd_block(const BatchInputs& in, std::size_t offset, std::size_t n, double* hi, double* lo,
+                                   double* bound) const {
   double* H = hi_.data();
   double* L = lo_.data();
   double* E = er_.data();
   for (std::size_t i = 0; i < prog_.n_inputs(); ++i) {
-    const double* x = columns[i] + offset;
-    const double* xe = errors && errors[i] ? errors[i] + offset : nullptr;
+    const double* x = in.columns[i] + offset;
+    const double* xl = in.lows && in.lows[i] ? in.lows[i] + offset : nullptr;
+    const double* xe = in.errors && in.errors[i] ? in.errors[i] + offset : nullptr;
     for (std::size_t k = 0; k < n; ++k) {
       H[i * kBlock + k] = x[k];
-      L[i * kBlock + k] = 0.0;
+      L[i * kBlock + k] = xl ? xl[k] : 0.0;
       E[i * kBlock + k] = xe ? xe[k] : 0.0;
     }
   }
@@ -284,26 +285,29 @@ void CertifiedBatch::eval_dd_block(const double* const* columns, const double* c
   }
 }
 
-CertifiedBatchStats CertifiedBatch::eval(const double* const* columns, const double* const* errors, std::size_t n,
-                                         double* out, CertifiedStage* stage) const {
+CertifiedBatchStats CertifiedBatch::eval(const BatchInputs& in, std::size_t n, double* out, CertifiedStage* stage) const {
   CertifiedBatchStats st;
   double hi[kBlock], lo[kBlock], bound[kBlock];
   unsigned char decided[kBlock];
   std::vector<double> x(prog_.n_inputs()), xe(prog_.n_inputs());
+  const double inf = std::numeric_limits<double>::infinity();
   for (std::size_t off = 0; off < n; off += kBlock) {
     const std::size_t m = std::min(kBlock, n - off);
-    eval_dd_block(columns, errors, off, m, hi, lo, bound);
+    eval_dd_block(in, off, m, hi, lo, bound);
     decide_block(hi, lo, bound, out + off, decided, m);
     for (std::size_t k = 0; k < m; ++k) {
       stage[off + k] = decided[k] ? CertifiedStage::DoubleDouble : CertifiedStage::None;
-      if (!decided[k]) out[off + k] = hi[k] + lo[k];
-      if (stage[off + k] != CertifiedStage::None) {
+      if (decided[k]) {
         ++st.double_double;
         continue;
       }
+      out[off + k] = hi[k] + lo[k];
+      // stage 2 takes double inputs: a low part becomes input error (rounded up)
       for (std::size_t i = 0; i < prog_.n_inputs(); ++i) {
-        x[i] = columns[i][off + k];
-        xe[i] = errors && errors[i] ? errors[i][off + k] : 0.0;
+        x[i] = in.columns[i][off + k];
+        const double e = in.errors && in.errors[i] ? in.errors[i][off + k] : 0.0;
+        const double l = in.lows && in.lows[i] ? std::fabs(in.lows[i][off + k]) : 0.0;
+        xe[i] = l == 0 ? e : std::nextafter(e + l, inf);
       }
       const FastCertified r = tape_(x.data(), xe.data());
       if (r.decided) {

@@ -50,6 +50,16 @@ struct CertifiedBatchStats {
 // finite.
 std::optional<double> round_certified(double hi, double lo, double e);
 
+// The inputs of a batch, by input: columns[i][k] is input i at point k. lows (may be null, or
+// lows[i] null): a second double per value, so that the input is the double-double
+// columns + lows (|low| <= half an ulp of the column's value), e.g. a decimal that is not a
+// double; errors (likewise optional): bounds on |value - exact input|. Missing: 0.
+struct BatchInputs {
+  const double* const* columns = nullptr;
+  const double* const* lows = nullptr;
+  const double* const* errors = nullptr;
+};
+
 class CertifiedBatch {
  public:
   static constexpr std::size_t kBlock = 64;
@@ -58,18 +68,17 @@ class CertifiedBatch {
   const Program& program() const { return prog_; }
   const CertifiedTape& long_double_stage() const { return tape_; }
 
-  // columns[i][k]: input i at point k, a double. errors == nullptr (or errors[i] == nullptr):
-  // the inputs are exact; otherwise errors[i][k] >= |columns[i][k] - exact input|.
-  // Where stage[k] != None, out[k] is the double nearest the true value (+-inf when the true
-  // value is beyond the largest double, 0 below half the smallest subnormal). Elsewhere out[k]
-  // is the double-double value rounded, with no claim. One object per thread (scratch space).
-  CertifiedBatchStats eval(const double* const* columns, const double* const* errors, std::size_t n, double* out,
-                           CertifiedStage* stage) const;
+  // Where stage[k] != None, out[k] is the double nearest the true value at point k (+-inf when
+  // the true value is beyond the largest double, 0 below half the smallest subnormal).
+  // Elsewhere out[k] is the double-double value rounded, with no claim. One object per thread
+  // (scratch space).
+  CertifiedBatchStats eval(const BatchInputs& in, std::size_t n, double* out, CertifiedStage* stage) const;
 
-  // Stage 1 alone on one block (n <= kBlock), for tests and benchmarks: value V = hi + lo and
-  // bound E of the result per point (E NaN or infinite: gave up).
-  void eval_dd_block(const double* const* columns, const double* const* errors, std::size_t offset, std::size_t n,
-                     double* hi, double* lo, double* bound) const;
+  // Stage 1 alone on the points [offset, offset + n), n <= kBlock, for tests, benchmarks and
+  // single points: the result's value V = hi + lo and bound E per point (E NaN or infinite:
+  // gave up).
+  void eval_dd_block(const BatchInputs& in, std::size_t offset, std::size_t n, double* hi, double* lo,
+                     double* bound) const;
 
  private:
   Program prog_;

@@ -600,7 +600,7 @@ ClosedAllResult closed_forms_wp_all(const std::vector<std::string>& paths, const
         const num::CertifiedBatch cb(*prog);
         std::vector<double> cval(n);
         std::vector<num::CertifiedStage> cstage(n);
-        Stat t = time_per_op([&] { cb.eval(cp.data(), nullptr, n, cval.data(), cstage.data()); },
+        Stat t = time_per_op([&] { cb.eval({cp.data()}, n, cval.data(), cstage.data()); },
                              static_cast<long>(n), opt.repeats);
         double arb_seconds = 0;
         std::vector<double> errs;

@@ -114,3 +114,58 @@ TEST_CASE("eval --points: one CSV row per point, a bad row does not stop the oth
   std::remove(in.c_str());
   std::remove(out.c_str());
 }
+
+TEST_CASE("eval --points auto: every row as eval --at gives it, in file order, whichever stage answers", "[cli][eval]") {
+  // the first stage runs for all rows in the parent, the rest in workers: rows decided by
+  // double-double (exact doubles and decimals), rows for long double (momenta of 1e160), for Arb
+  // (a cancellation at an inexact decimal), rows outside the domain, malformed values and rows
+  // with the wrong number of cells must come out exactly as `eval --at` says, in order
+  const std::string in = "derivcheck_eval_auto_" + std::to_string(::getpid()) + ".csv";
+  const std::string out = "derivcheck_eval_auto_" + std::to_string(::getpid()) + ".out.csv";
+  const std::vector<std::string> rows = {"2,3,0.5,-0.25",  "1e160,1e160,3,4", "2.1,3.3,1.7,-0.3", "-1,2,3,4",
+                                         "1,2,x,4",        "1,2,3",           "1e-170,1e-170,3,4", "0.1,0.2,0.3,0.4"};
+  {
+    std::ofstream f(in);
+    f << "m1,m2,v1,v2\n";
+    for (const auto& r : rows) f << r << "\n";
+  }
+  Run r = run({"eval", src(kHard), "momentum_norm", "--points", in, "-o", out, "--jobs", "2"}, 300);
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 1);   // rows without a value
+  std::ifstream f(out);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  const auto l = lines_of(ss.str());
+  CAPTURE(ss.str());
+  REQUIRE(l.size() == rows.size() + 1);
+  const char* names[] = {"m1", "m2", "v1", "v2"};
+  int first_stage = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    INFO("row " << rows[i]);
+    std::vector<std::string> cells;
+    std::stringstream rs(rows[i]);
+    for (std::string c; std::getline(rs, c, ',');) cells.push_back(c);
+    if (cells.size() != 4) {
+      CHECK(l[i + 1].find("error: 3 values for 4 columns") != std::string::npos);
+      continue;
+    }
+    std::string at;
+    for (std::size_t j = 0; j < 4; ++j) at += (j ? "," : "") + std::string(names[j]) + "=" + cells[j];
+    Run one = run({"eval", src(kHard), "momentum_norm", "--at", at}, 120);
+    const auto o = lines_of(one.out);
+    if (one.exit_code != 0) {
+      CHECK(l[i + 1].find(",,,,") != std::string::npos);
+      CHECK(l[i + 1].find("error: ") != std::string::npos);
+      continue;
+    }
+    REQUIRE(o.size() >= 3);
+    // value, method and bound as the single-point command prints them
+    auto field = [](const std::string& t) { return t.find(',') == std::string::npos ? t : "\"" + t + "\""; };
+    CHECK(l[i + 1] == rows[i] + "," + o[0] + "," + field(o[1].substr(8)) + "," + field(o[2].substr(7)) + ",");
+    first_stage += o[1].find("double-double") != std::string::npos ? 1 : 0;
+  }
+  CHECK(first_stage >= 3);
+  CHECK(ss.str().find("long double with a running error bound") != std::string::npos);
+  std::remove(in.c_str());
+  std::remove(out.c_str());
+}
