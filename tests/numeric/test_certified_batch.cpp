@@ -204,18 +204,10 @@ TEST_CASE("handout formulas: the batch decides almost every point, correctly rou
   for (const char* file : {"05_direct_impact.dc", "07_two_ball_bounce.dc", "09_rocket.dc", "06_ballistic_pendulum.dc"}) {
     const dc::Derivation& d = dc::test::handout(file);
     for (const dc::Formula& f : dc::formulas(d)) {
-      std::vector<symbol> xs;
-      GiNaC::exmap to_plain;
-      for (const auto& p : f.params) {
-        xs.emplace_back(p.get_name());
-        to_plain[d.symbols.find(p.get_name())->sym] = xs.back();
-      }
-      const ex expr = f.expr.subs(to_plain);
-      try {
-        (void)dc::num::compile(expr, xs);
-      } catch (const std::exception&) {
-        continue;
-      }
+      const auto plain = dc::test::compilable_plain(d, f);
+      if (!plain) continue;
+      const ex& expr = plain->expr;
+      const std::vector<symbol>& xs = plain->xs;
       Points pts;
       for (int i = 0; i < 40 && pts.size() < 8; ++i) {
         std::vector<double> v;

@@ -149,19 +149,10 @@ TEST_CASE("decided results of handout formulas are the correctly rounded doubles
   for (const char* file : {"05_direct_impact.dc", "07_two_ball_bounce.dc", "09_rocket.dc"}) {
     const dc::Derivation& d = dc::test::handout(file);
     for (const dc::Formula& f : dc::formulas(d)) {
-      // plain symbols of the same names (Formula::params are sliced copies: see derivation.hpp)
-      std::vector<symbol> xs;
-      GiNaC::exmap to_plain;
-      for (const auto& p : f.params) {
-        xs.emplace_back(p.get_name());
-        to_plain[d.symbols.find(p.get_name())->sym] = xs.back();
-      }
-      const ex expr = f.expr.subs(to_plain);
-      try {
-        (void)dc::num::compile(expr, xs);
-      } catch (const std::exception&) {
-        continue;
-      }
+      const auto plain = dc::test::compilable_plain(d, f);
+      if (!plain) continue;
+      const ex& expr = plain->expr;
+      const std::vector<symbol>& xs = plain->xs;
       for (int i = 0; i < 5; ++i) {
         std::vector<Input> in;
         for (std::size_t k = 0; k < xs.size(); ++k) in.push_back({{}, 0.25 + 4 * unit(rng), 0});
