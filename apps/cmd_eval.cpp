@@ -106,48 +106,82 @@ int run_points(const EvalOptions& o) {
   auto answer_fields = [](const Answer& a) {
     return csv_field(a.value) + "," + csv_field(a.method) + "," + csv_field(a.bound) + "," + csv_field(a.note);
   };
-  // auto: the double-double stage for every row at once, in this process (no loop, no unbounded
-  // work); it gives exactly what the row's worker would have given from that stage. The other
-  // rows (later stages, Arb, errors) go to the workers under the budget.
-  std::vector<std::string> payload(lines.size());
-  std::vector<bool> answered(lines.size(), false);
-  if (o.method == "auto") {
-    std::vector<std::size_t> rows;
-    std::vector<std::vector<std::pair<std::string, GiNaC::numeric>>> points;
-    for (std::size_t row = 1; row < lines.size(); ++row) {
-      if (ats[row].empty()) continue;
-      try {
-        points.push_back(num::parse_assignments(ats[row]));
-        rows.push_back(row);
-      } catch (const std::exception&) {
-        // malformed value: the worker reports it
-      }
-    }
-    const auto first = num::certified_auto_first_stage(d, o.label, points);
-    for (std::size_t j = 0; j < rows.size(); ++j) {
-      if (!first[j]) continue;
-      Answer a;
-      a.value = num::shortest_text(first[j]->value);
-      a.method = first[j]->method;
-      a.bound = bound_text(first[j]->error_ulps);
-      a.note = first[j]->note;
-      payload[rows[j]] = answer_fields(a);
-      answered[rows[j]] = true;
-    }
-  }
-
+  // Tasks, each in a supervised worker: "row R" evaluates row R as `--at` would; "rows A B"
+  // runs the double-double stage of auto for rows [A, B) at once (no loop, but the exact
+  // parsing and the domain checks of a hostile row are work too, so it runs under the budget)
+  // and answers, one record per row, the row's fields or nothing (the row then gets a task of
+  // its own). Each row's answer is exactly what its own task would give.
+  constexpr char kRecord = '\x1e';
   exec::RunOptions run = o.budget.resolve();
   exec::Pool pool(run.jobs, run.budget, [&](const std::string& task) -> std::string {
-    const std::size_t row = std::stoul(task);
-    const std::vector<std::string> cells = split_csv_line(lines[row]);
+    std::istringstream t(task);
+    std::string kind;
+    std::size_t first = 0, last = 0;
+    t >> kind >> first;
+    if (kind == "rows") {
+      t >> last;
+      std::vector<std::size_t> rows;
+      std::vector<std::vector<std::pair<std::string, GiNaC::numeric>>> points;
+      for (std::size_t row = first; row < last; ++row) {
+        if (ats[row].empty()) continue;
+        try {
+          points.push_back(num::parse_assignments(ats[row]));
+          rows.push_back(row);
+        } catch (const std::exception&) {
+          // malformed value: the row's own task reports it
+        }
+      }
+      const auto answers = num::certified_auto_first_stage(d, o.label, points);
+      std::vector<std::string> records(last - first);
+      for (std::size_t j = 0; j < rows.size(); ++j) {
+        if (!answers[j]) continue;
+        Answer a;
+        a.value = num::shortest_text(answers[j]->value);
+        a.method = answers[j]->method;
+        a.bound = bound_text(answers[j]->error_ulps);
+        a.note = answers[j]->note;
+        records[rows[j] - first] = answer_fields(a);
+      }
+      std::string out;
+      for (const auto& r : records) out += r + kRecord;
+      return out;
+    }
+    const std::vector<std::string> cells = split_csv_line(lines[first]);
     try {
       if (cells.size() != header.size())
         throw std::invalid_argument(std::to_string(cells.size()) + " values for " + std::to_string(header.size()) + " columns");
-      return answer_fields(evaluate(d, o, ats[row]));
+      return answer_fields(evaluate(d, o, ats[first]));
     } catch (const std::exception& e) {
       return ",,," + csv_field(std::string("error: ") + e.what());
     }
   });
+  std::vector<std::string> payload(lines.size());
+  std::vector<bool> answered(lines.size(), false);
+  if (o.method == "auto") {
+    constexpr std::size_t kChunk = 256;
+    std::size_t next = 1;
+    std::vector<std::size_t> sent;
+    std::size_t back = 0;
+    pool.run(
+        [&](std::string& task) {
+          if (next >= lines.size()) return false;
+          const std::size_t last = std::min(lines.size(), next + kChunk);
+          task = "rows " + std::to_string(next) + " " + std::to_string(last);
+          sent.push_back(next);
+          next = last;
+          return true;
+        },
+        [&](exec::Outcome&& r) {
+          std::size_t row = sent[back++];
+          if (!r.done()) return;   // over its budget: every row of the chunk gets its own task
+          std::size_t from = 0;
+          for (std::size_t to; (to = r.payload.find(kRecord, from)) != std::string::npos; from = to + 1, ++row)
+            if (to > from) {
+              payload[row] = r.payload.substr(from, to - from);
+              answered[row] = true;
+            }
+        });
+  }
   std::size_t next = 1;
   std::vector<std::size_t> sent;   // rows in the order their tasks went out (outcomes come back in it)
   std::size_t back = 0;
@@ -156,7 +190,7 @@ int run_points(const EvalOptions& o) {
         while (next < lines.size() && answered[next]) ++next;
         if (next >= lines.size()) return false;
         sent.push_back(next);
-        task = std::to_string(next++);
+        task = "row " + std::to_string(next++);
         return true;
       },
       [&](exec::Outcome&& r) {

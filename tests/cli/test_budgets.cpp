@@ -109,6 +109,30 @@ TEST_CASE("eval: values far outside double's range are certified, never a wrong 
     CHECK(r.out == c.expect + "\n");
   }
 }
+TEST_CASE("eval --points: a row whose checks run away ends in its budget, the others are answered",
+          "[cli][budgets]") {
+  // the rows' first stage runs in chunks under the budget; a chunk that runs out hands each of
+  // its rows to a task of its own, so only the runaway row is left without a value
+  const std::string in = temp_path("points") + ".csv";
+  {
+    std::ofstream f(in);
+    f << "x,y\n1.5,2\n1e99999,3\n0.1,0.3\n";
+  }
+  Run r = run({"eval", src("tests/data/runaway/points_assumption.dc"), "f", "--points", in, "--memory", "256M",
+               "--step-timeout", "20"},
+              300, kUlimit);
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("internal error") == std::string::npos);
+  std::istringstream out(r.out);
+  std::vector<std::string> l;
+  for (std::string line; std::getline(out, line);) l.push_back(line);
+  REQUIRE(l.size() == 4);
+  CHECK(l[1].rfind("1.5,2,1.75,\"auto (correctly rounded: double-double", 0) == 0);
+  CHECK(l[2].rfind("1e99999,3,,,,undecided: ", 0) == 0);
+  CHECK(l[3].rfind("0.1,0.3,1.3333333333333333,\"auto (correctly rounded: double-double", 0) == 0);
+  std::remove(in.c_str());
+}
 #endif
 
 TEST_CASE("time budget: a step over it is undecided with the budget as the reason, the others are checked",
