@@ -276,8 +276,9 @@ class Compiler {
   // ---- compilation ---------------------------------------------------------------------
   std::uint32_t compile(const ex& e) {
     // an integer power of a sum is compiled as a product, whose key carries the sign that
-    // orienting the sum may move out of the power
-    if (is_int_power_of_sum(e)) return compile_product(product_of(e));
+    // orienting the sum may move out of the power; a constant one ((1 + 7 atan(3))^-1) is a
+    // constant (compile_product hands constant factors back here: no other way ends)
+    if (is_int_power_of_sum(e) && !is_constant_expr(e)) return compile_product(product_of(e));
     const std::string& k = key(e);
     auto it = memo_.find(k);
     if (it != memo_.end()) return it->second;

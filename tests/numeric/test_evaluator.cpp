@@ -167,3 +167,21 @@ TEST_CASE("evaluator bad input", "[numeric][evaluator]") {
   Evaluator<double> ev(compile(x, {x}));
   CHECK_THROWS_AS(ev(std::vector<double>{1.0, 2.0}), std::invalid_argument);
 }
+
+TEST_CASE("a constant sum raised to an integer power is a constant (no endless recursion)", "[numeric][evaluator]") {
+  // x - 7 atan(3)/(1 + 7 atan(3)): the product's factor (1 + 7 atan(3))^-1 used to be handed back
+  // and forth between the product and the power of a sum until the stack ran out (found by the
+  // random formulas of test_certified_batch.cpp)
+  GiNaC::symbol x("x");
+  const GiNaC::ex c = 7 * GiNaC::atan(GiNaC::ex(3));
+  for (const GiNaC::ex& f : {x - c / (1 + c), x * GiNaC::pow(1 + c, -2), x + GiNaC::pow(2 + GiNaC::sqrt(GiNaC::ex(2)), 3)}) {
+    INFO(f);
+    const dc::num::Program p = dc::num::compile(f, {x});
+    const dc::num::Evaluator<double> ev(p);
+    const double at = 0.5;
+    GiNaC::exmap m;
+    m[x] = dc::num::exact_rational(at);
+    const GiNaC::numeric ref = dc::num::reference_value(f, m, 40);
+    CHECK(dc::num::error_in_ulps(ev(&at), ref) <= 4);
+  }
+}
