@@ -238,8 +238,10 @@ CertifiedBatch::CertifiedBatch(Program p) : prog_(std::move(p)), tape_(prog_) {
   er_.assign((prog_.n_registers + 1) * kBlock, 0.0);
   for (std::size_t c = 0; c < prog_.const_double.size(); ++c) {
     const std::size_t r = (prog_.n_inputs() + c) * kBlock;
-    const double h = prog_.const_double[c];
-    const double l = c < prog_.const_double_lo.size() ? prog_.const_double_lo[c] : 0.0;
+    // renormalised (exactly): the cited bounds assume |lo| <= ulp(hi) / 2, and a constant's
+    // hi comes from a 40-digit decimal, which may miss the nearest double next to a midpoint
+    double h = 0, l = 0;
+    two_sum(prog_.const_double[c], c < prog_.const_double_lo.size() ? prog_.const_double_lo[c] : 0.0, h, l);
     const double e = std::isfinite(h) ? kConst * std::fabs(h) + kEta : kNaN;
     for (std::size_t k = 0; k < kBlock; ++k) {
       hi_[r + k] = h;
@@ -259,8 +261,11 @@ void CertifiedBatch::eval_dd_block(const BatchInputs& in, std::size_t offset, st
     const double* xl = in.lows && in.lows[i] ? in.lows[i] + offset : nullptr;
     const double* xe = in.errors && in.errors[i] ? in.errors[i] + offset : nullptr;
     for (std::size_t k = 0; k < n; ++k) {
-      H[i * kBlock + k] = x[k];
-      L[i * kBlock + k] = xl ? xl[k] : 0.0;
+      // a caller's double-double renormalised exactly (the cited bounds need |lo| <= ulp(hi)/2)
+      double h = x[k], l = 0;
+      if (xl) two_sum(x[k], xl[k], h, l);
+      H[i * kBlock + k] = h;
+      L[i * kBlock + k] = l;
       E[i * kBlock + k] = xe ? xe[k] : 0.0;
     }
   }
