@@ -10,47 +10,14 @@
 #include <limits>
 
 #include "numeric/certified_steps.hpp"
+#include "numeric/dd_functions.hpp"
+#include "numeric/double_double.hpp"
 
 namespace dc::num {
 namespace {
 
-constexpr double kAdd = 0x1p-103;     // 8u^2: a double-double sum, relative to |hi| (cited 3u^2)
-constexpr double kMul = 0x1p-102;     // 16u^2: a double-double product (cited 7u^2)
+using namespace dd;
 constexpr double kConst = 0x1p-100;   // a constant: 40 digits (1e-39) rounded to double-double
-constexpr double kEta = 0x1p-1060;    // per operation: roundings of subnormal lo parts
-constexpr double kSafe = 1 + 0x1p-40; // the bound's own roundings (a few dozen, each <= 2^-53)
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kTiny = 0x1p-960;    // above it a product's rounding error is a double (no underflow)
-constexpr double kBig = 0x1p1020;     // below it nothing in an error-free transformation overflows
-
-// The error-free transformations (exact when nothing overflows).
-inline void two_sum(double a, double b, double& s, double& e) {
-  s = a + b;
-  const double bb = s - a;
-  e = (a - (s - bb)) + (b - bb);
-}
-inline void fast_two_sum(double a, double b, double& s, double& e) {
-  s = a + b;
-  e = b - (s - a);
-}
-// Algorithm 6 of Joldes-Muller-Popescu: (ah + al) + (bh + bl)
-inline void dd_add(double ah, double al, double bh, double bl, double& sh, double& sl) {
-  double s, e, t, f;
-  two_sum(ah, bh, s, e);
-  two_sum(al, bl, t, f);
-  e += t;
-  fast_two_sum(s, e, s, e);
-  e += f;
-  fast_two_sum(s, e, sh, sl);
-}
-// Algorithm 10 (DWTimesDW1): (ah + al) (bh + bl)
-inline void dd_mul(double ah, double al, double bh, double bl, double& ph, double& pl) {
-  const double p = ah * bh;
-  double e = std::fma(ah, bh, -p);
-  const double cross = ah * bl + al * bh;
-  e += cross;
-  fast_two_sum(p, e, ph, pl);
-}
 
 // One instruction of + - * / sqrt neg abs over n points. The destination never aliases an
 // operand (eval_dd_block goes through a scratch register), so that the loops vectorise.
@@ -61,96 +28,24 @@ void rational_block(Op op, double* __restrict dh, double* __restrict dl, double*
                     const double* __restrict ah, const double* __restrict al, const double* __restrict ae,
                     const double* __restrict bh, const double* __restrict bl, const double* __restrict be,
                     std::size_t n) {
+  const auto A = [&](std::size_t k) { return DDE{ah[k], al[k], ae[k]}; };
+  const auto B = [&](std::size_t k) { return DDE{bh[k], bl[k], be[k]}; };
+  const auto put = [&](std::size_t k, DDE v) {
+    dh[k] = v.h;
+    dl[k] = v.l;
+    de[k] = v.e;
+  };
   switch (op) {
-    case Op::Add:
-    case Op::Sub: {
-      const double sign = op == Op::Add ? 1.0 : -1.0;
-      for (std::size_t k = 0; k < n; ++k) {
-        double h, l;
-        dd_add(ah[k], al[k], sign * bh[k], sign * bl[k], h, l);
-        // two exact doubles: TwoSum is exact (E stays 0, so that ties are decided exactly)
-        const bool exact = ae[k] == 0 && be[k] == 0 && al[k] == 0 && bl[k] == 0 && std::fabs(h) <= kBig;
-        de[k] = exact ? 0.0 : (ae[k] + be[k] + kAdd * std::fabs(h) + kEta) * kSafe;
-        dh[k] = h;
-        dl[k] = l;
-      }
-      break;
-    }
-    case Op::Mul:
-      for (std::size_t k = 0; k < n; ++k) {
-        double h, l;
-        dd_mul(ah[k], al[k], bh[k], bl[k], h, l);
-        const double ea = ae[k], eb = be[k];
-        // two exact doubles whose product is far from underflow: TwoProd is exact
-        const bool exact = ea == 0 && eb == 0 && al[k] == 0 && bl[k] == 0 && std::fabs(h) >= kTiny &&
-                           std::fabs(h) <= kBig;
-        de[k] = exact ? 0.0 : (std::fabs(ah[k]) * eb + std::fabs(bh[k]) * ea + ea * eb + kMul * std::fabs(h) + kEta) * kSafe;
-        dh[k] = h;
-        dl[k] = l;
-      }
-      break;
-    case Op::Div:
-      for (std::size_t k = 0; k < n; ++k) {
-        const double a_h = ah[k], a_l = al[k], b_h = bh[k], b_l = bl[k], ea = ae[k], eb = be[k];
-        // two quotient digits: q1 = a/b, q2 = (a - b q1)/b
-        const double q1 = a_h / b_h;
-        double ph, pl, rh, rl;
-        dd_mul(b_h, b_l, q1, 0.0, ph, pl);
-        dd_add(a_h, a_l, -ph, -pl, rh, rl);
-        const double q2 = rh / b_h;
-        double qh, ql;
-        fast_two_sum(q1, q2, qh, ql);
-        // a posteriori: |q - a/b| = |a - q b| / |b|, the residual computed in double-double
-        dd_mul(qh, ql, b_h, b_l, ph, pl);
-        dd_add(a_h, a_l, -ph, -pl, rh, rl);
-        const double bb = std::fabs(b_h);
-        const double comp = (std::fabs(rh) + kMul * std::fabs(ph) + kEta) / bb;
-        // |a/b - a'/b'| <= 2 (|a| eb / |b| + ea) / |b| when eb <= |b| / 4 (|b'| >= |b| / 2)
-        const double prop = 2 * (std::fabs(a_h) * (eb / bb) + ea) / bb;
-        const double e = (comp + prop + kEta) * kSafe;
-        de[k] = eb <= bb / 4 ? e : kNaN;
-        dh[k] = qh;
-        dl[k] = ql;
-      }
-      break;
-    case Op::Sqrt:
-      for (std::size_t k = 0; k < n; ++k) {
-        const double a_h = ah[k], a_l = al[k], ea = ae[k];
-        const bool zero = a_h == 0 && a_l == 0 && ea == 0;
-        const double x0 = a_h > 0 ? a_h : 1.0;   // other lanes give up below
-        // one Newton step on 1/sqrt in double-double (as compensated.hpp)
-        const double r = 1.0 / std::sqrt(x0);
-        const double ax = x0 * r;
-        double sh, sl, th, tl;
-        dd_mul(ax, 0.0, ax, 0.0, sh, sl);
-        dd_add(x0, a_l, -sh, -sl, th, tl);
-        two_sum(ax, th * (r * 0.5), sh, sl);
-        // a posteriori: |s - sqrt(a)| = |s^2 - a| / (s + sqrt(a)) <= |s^2 - a| / s
-        double ph, pl;
-        dd_mul(sh, sl, sh, sl, ph, pl);
-        dd_add(ph, pl, -x0, -a_l, th, tl);
-        const double comp = (std::fabs(th) + kMul * std::fabs(ph) + kEta) / sh;
-        // |sqrt(a) - sqrt(a')| <= ea / sqrt(a) <= 2 ea / s when comp <= s / 4
-        const double e = (comp + 2 * ea / sh + kEta) * kSafe;
-        const bool ok = a_h > 0 && ea <= a_h / 2 && comp <= sh / 4;
-        de[k] = zero ? 0.0 : ok ? e : kNaN;
-        dh[k] = zero ? 0.0 : sh;
-        dl[k] = zero ? 0.0 : sl;
-      }
-      break;
-    case Op::Neg:
-      for (std::size_t k = 0; k < n; ++k) {
-        dh[k] = -ah[k];
-        dl[k] = -al[k];
-        de[k] = ae[k];
-      }
-      break;
+    case Op::Add: for (std::size_t k = 0; k < n; ++k) put(k, add_keep_exact(A(k), B(k))); break;
+    case Op::Sub: for (std::size_t k = 0; k < n; ++k) put(k, add_keep_exact(A(k), neg(B(k)))); break;
+    case Op::Mul: for (std::size_t k = 0; k < n; ++k) put(k, mul_keep_exact(A(k), B(k))); break;
+    case Op::Div: for (std::size_t k = 0; k < n; ++k) put(k, div(A(k), B(k))); break;
+    case Op::Sqrt: for (std::size_t k = 0; k < n; ++k) put(k, dd::sqrt(A(k))); break;
+    case Op::Neg: for (std::size_t k = 0; k < n; ++k) put(k, neg(A(k))); break;
     case Op::Abs:
       for (std::size_t k = 0; k < n; ++k) {
         const double s = ah[k] < 0 ? -1.0 : 1.0;   // hi carries the sign (|lo| <= ulp(hi) / 2)
-        dh[k] = s * ah[k];
-        dl[k] = s * al[k];
-        de[k] = ae[k];
+        put(k, DDE{s * ah[k], s * al[k], ae[k]});
       }
       break;
     default: break;
@@ -164,32 +59,43 @@ bool is_rational(Op op) {
   }
 }
 
-// The other functions, point by point, through the long double steps: V rounded to long double
-// (relative error 2^-64) and back, exactly, as hi + lo.
+// One point of a function without (or beyond the range of) a double-double kernel, through the
+// long double steps: V rounded to long double (relative error 2^-64) and back, exactly, as hi + lo.
+void library_lane(Op op, double* dh, double* dl, double* de, const double* ah, const double* al, const double* ae,
+                  const double* bh, const double* bl, const double* be, std::size_t k) {
+  using LD = long double;
+  // V = hi + lo rounded to long double; its rounding error exactly (Fast2Sum in long double)
+  const LD a = static_cast<LD>(ah[k]) + static_cast<LD>(al[k]);
+  const LD ea = static_cast<LD>(ae[k]) + std::fabs(static_cast<LD>(al[k]) - (a - static_cast<LD>(ah[k])));
+  certified::Step st;
+  if (op_arity(op) == 2) {
+    const LD b = static_cast<LD>(bh[k]) + static_cast<LD>(bl[k]);
+    const LD eb = static_cast<LD>(be[k]) + std::fabs(static_cast<LD>(bl[k]) - (b - static_cast<LD>(bh[k])));
+    st = certified::binary(op, a, ea, b, eb);
+  } else {
+    st = certified::unary(op, a, ea);
+  }
+  const double h = static_cast<double>(st.v);
+  const double l = static_cast<double>(st.v - static_cast<LD>(h));   // exact unless subnormal
+  const LD e = st.e * certified::kSafe;
+  const bool ok = !st.why && std::isfinite(st.v) && std::isfinite(e) && std::isfinite(h);
+  dh[k] = ok ? h : 0.0;
+  dl[k] = ok ? l : 0.0;
+  // rounded up to double; kEta covers the subnormal case of l
+  de[k] = ok ? std::nextafter(static_cast<double>(e), std::numeric_limits<double>::infinity()) + kEta : kNaN;
+}
+
+// The other functions: the double-double kernels (dd_functions.hpp) where there is one, and the
+// long double step at the points where the kernel gives up (or where there is none).
 void library_block(Op op, double* dh, double* dl, double* de, const double* ah, const double* al, const double* ae,
                    const double* bh, const double* bl, const double* be, std::size_t n) {
-  using LD = long double;
-  const bool two = op_arity(op) == 2;
+  const bool kernel = has_kernel(op);
+  if (kernel) function_block(op, dh, dl, de, ah, al, ae, bh, bl, be, n);
   for (std::size_t k = 0; k < n; ++k) {
-    // V = hi + lo rounded to long double; its rounding error exactly (Fast2Sum in long double)
-    const LD a = static_cast<LD>(ah[k]) + static_cast<LD>(al[k]);
-    const LD ea = static_cast<LD>(ae[k]) + std::fabs(static_cast<LD>(al[k]) - (a - static_cast<LD>(ah[k])));
-    certified::Step st;
-    if (two) {
-      const LD b = static_cast<LD>(bh[k]) + static_cast<LD>(bl[k]);
-      const LD eb = static_cast<LD>(be[k]) + std::fabs(static_cast<LD>(bl[k]) - (b - static_cast<LD>(bh[k])));
-      st = certified::binary(op, a, ea, b, eb);
-    } else {
-      st = certified::unary(op, a, ea);
-    }
-    const double h = static_cast<double>(st.v);
-    const double l = static_cast<double>(st.v - static_cast<LD>(h));   // exact unless subnormal
-    const LD e = st.e * certified::kSafe;
-    const bool ok = !st.why && std::isfinite(st.v) && std::isfinite(e) && std::isfinite(h);
-    dh[k] = ok ? h : 0.0;
-    dl[k] = ok ? l : 0.0;
-    // rounded up to double; kEta covers the subnormal case of l
-    de[k] = ok ? std::nextafter(static_cast<double>(e), std::numeric_limits<double>::infinity()) + kEta : kNaN;
+    const bool good = std::fabs(dh[k]) <= std::numeric_limits<double>::max() &&
+                      std::fabs(dl[k]) <= std::numeric_limits<double>::max() && de[k] >= 0 &&
+                      de[k] <= std::numeric_limits<double>::max();
+    if (!kernel || !good) library_lane(op, dh, dl, de, ah, al, ae, bh, bl, be, k);
   }
 }
 

@@ -2,8 +2,9 @@
 // doubles with a certificate, a block of points at a time, escalating point by point only where
 // a stage cannot decide.
 //
-// Stage 1, double-double with a running error bound. Every register holds, per point, a value
-// V = hi + lo (a double-double) and a bound E >= |V - true value|, computed in double:
+// Stage 1, double-double with a running error bound (numeric/double_double.hpp). Every
+// register holds, per point, a value V = hi + lo (a double-double) and a bound E >= |V - true
+// value|, computed in double:
 //   exact the sum or product of two exact doubles (TwoSum, TwoProd away from underflow) has
 //         E = 0, so that a result exactly halfway between two doubles is still decided;
 //   + -   the "accurate" double-double sum (Joldes, Muller, Popescu, ACM TOMS 44(2), 2017,
@@ -13,10 +14,12 @@
 //         A - Q B (or S^2 - A), itself computed with the two operations above;
 //   operand errors propagate as in interval arithmetic (|A| Eb + |B| Ea + Ea Eb for a product,
 //         and so on); a division by, or a square root of, an interval that may reach 0 gives up;
-//   exp, log, sin, acos, pow, ... are taken from the long double steps of the fast try
-//         (certified_steps.hpp: glibc's documented long double errors, 8 ulps charged), so
-//         after them a value has ~64 bits, not ~106; the rounding of V to long double is
-//         measured exactly (Fast2Sum) and added to the operand's bound;
+//   exp, expm1, log, log1p, sin, cos, tan, asin, acos, atan, pow, hypot: double-double kernels
+//         built from the same operations, with tables computed from Arb enclosures and the
+//         truncation of their series bounded (numeric/dd_functions.hpp; about 2^-75 relative);
+//         where a kernel gives up (exp beyond 708, sin beyond 2^20, acos next to +-1, ...) the
+//         long double step takes the point (certified_steps.hpp: glibc's documented long double
+//         errors, 8 ulps charged; the rounding of V to long double is measured exactly);
 //   underflow: every operation adds 2^-1060 (far above the few roundings at 2^-1075 that a
 //         subnormal lo part can suffer); the bound's own arithmetic (round to nearest) is
 //         covered by a factor 1 + 2^-40 per operation.

@@ -1,0 +1,334 @@
+// The double-double functions (dd_functions.hpp). Compiled with -ffp-contract=off (CMakeLists):
+// the error-free transformations need every operation rounded as written.
+#include "numeric/dd_functions.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "numeric/dd_tables.hpp"
+
+namespace dc::num::dd {
+namespace {
+
+constexpr double k64OverLn2 = 92.332482616893656877;   // only picks m: any rounding will do
+constexpr double k64OverPi = 20.371832715762602978;
+constexpr double kLn2Over128 = 0.0054152123481245725;   // ln2/128 rounded down
+
+DC_DD_INLINE DDE select(bool c, DDE a, DDE b) { return {c ? a.h : b.h, c ? a.l : b.l, c ? a.e : b.e}; }
+DC_DD_INLINE DDE entry(const double* h, const double* l, const double* e, std::size_t i) { return {h[i], l[i], e[i]}; }
+DC_DD_INLINE double pow_int(double t, int n) {
+  double p = 1;
+  for (int i = 0; i < n; ++i) p *= t;
+  return p;
+}
+// the coefficients 1/n! (n! is exact for n <= 18, and the division is correctly rounded),
+// computed at compile time
+constexpr double inv_fact_of(int n) {
+  double f = 1;
+  for (int i = 2; i <= n; ++i) f *= i;
+  return 1.0 / f;
+}
+struct InvFact {
+  double v[14];
+  constexpr InvFact() : v{} {
+    for (int n = 0; n < 14; ++n) v[n] = inv_fact_of(n);
+  }
+};
+constexpr InvFact kInvFact;
+DC_DD_INLINE constexpr double inv_fact(int n) { return kInvFact.v[n]; }
+
+// ---- exp ------------------------------------------------------------------------------------
+// expm1(r) for |r| <= 0.006: r + r^2/2 in double-double, r^3/6 + ... + r^8/8! in double (it is
+// below 4e-8 |r|), and the rest bounded by tau^9/9! / (1 - tau) <= 1.01 tau^9/9!.
+DC_DD_INLINE DDE expm1_small(DDE r, bool& ok) {
+  const double tau = mag(r);
+  ok = ok & (tau <= 0.006);
+  const DDE p = add(r, scale(mul(r, r), 0.5));
+  const DE t = high(r);
+  DE q = coeff(inv_fact(8));
+#pragma GCC unroll 8
+  for (int n = 7; n >= 3; --n) q = add(mul(q, t), coeff(inv_fact(n)));
+  q = mul(q, mul(mul(t, t), t));
+  return add(p, q, pow_int(tau, 9) * (1.01 * inv_fact(9)));
+}
+
+// exp(x) = 2^k T_j (1 + expm1(r)), r = x - m ln2/64, m = 64 k + j. Also gives m (expm1 uses it).
+DC_DD_INLINE DDE exp_dd(DDE x, const Tables& T, bool& ok, double& m_out, DDE& em1_out) {
+  ok = ok & (std::fabs(x.h) <= 708.0);
+  x = select(ok, x, exact(0.0));
+  const double m = round_int(x.h * k64OverLn2);
+  const double k = std::floor(m * (1.0 / 64));
+  const std::uint64_t j = int_bits(m - 64 * k) & 63;   // m - 64 k in [0, 63]
+  DDE r = add(x, neg(prod(m, T.ln2_64.p[0])));
+  r = add(r, neg(prod(m, T.ln2_64.p[1])));
+  r.e = (r.e + std::fabs(m) * T.ln2_64.res2) * kSafe;
+  const DDE em1 = expm1_small(r, ok);
+  const DDE tj = entry(T.exp_h, T.exp_l, T.exp_e, j);
+  m_out = m;
+  em1_out = em1;
+  return scale(add(tj, mul(tj, em1)), pow2(k));
+}
+
+DC_DD_INLINE DDE exp_of(DDE x, const Tables& T) {
+  bool ok = true;
+  double m;
+  DDE em1;
+  const DDE y = exp_dd(x, T, ok, m, em1);
+  return give_up_unless(ok, y);
+}
+
+DC_DD_INLINE DDE expm1_of(DDE x, const Tables& T) {
+  bool ok = true;
+  double m;
+  DDE em1;
+  const DDE y = exp_dd(x, T, ok, m, em1);
+  // m = 0 (|x| < ln2/128): expm1(x) = em1 keeps relative accuracy; else |result| >= 0.0054
+  return give_up_unless(ok, select(m == 0, em1, add(y, exact(-1.0))));
+}
+
+// ---- log ------------------------------------------------------------------------------------
+// log x = E ln2 - log r_j + log1p(u), x = 2^E f (0.75 <= f < 1.5), u = f r_j - 1 (|u| <= 0.0027),
+// log1p(u) = u - u^2/2 in double-double + u^3 (1/3 - u/4 + ... - u^7/10) in double, the rest
+// <= tau^11/11 / (1 - tau). direct: x is already u (log1p of a small argument), E = 0, j = 0.
+DC_DD_INLINE DDE log_dd(DDE x, bool direct, double E, const Tables& T) {
+  bool ok = direct || (x.h >= 0x1p-1022 && x.h < 0x1.8p1022 && x.e <= x.h / 4 && std::fabs(E) <= 1022);
+  E = direct || !ok ? 0.0 : E;
+  const DDE F = select(direct, exact(1.0), scale(select(ok, x, exact(1.0)), pow2(-E)));
+  // E from the caller (exponent_of) puts F.h in [0.75, 1.5), j in [-64, 128]; should it not, the
+  // padding entries (r = 1) serve and u is too large below
+  const double j = round_int((F.h - 1) * 256);
+  const std::uint64_t i = int_bits(j + 64) & 255;
+  const double r = T.log_r[i];
+  // u = F r - 1 from exact pieces: F.h r = ph + pl (TwoProd), ph - 1 exact (Sterbenz), F.l r = q
+  const DDE p = prod(F.h, r);
+  const DDE q = prod(F.l, r);
+  DDE u = add(add(exact(p.h - 1), exact(p.l)), q);
+  u.e = (u.e + p.e + F.e * r) * kSafe;
+  u = select(direct, x, u);
+  const double tau = mag(u);
+  ok = ok & (tau <= 0.003);
+  const DDE l1 = add(u, scale(mul(u, u), -0.5));
+  const DE t = high(u);
+  const double c[8] = {1.0 / 3, -1.0 / 4, 1.0 / 5, -1.0 / 6, 1.0 / 7, -1.0 / 8, 1.0 / 9, -1.0 / 10};
+  DE s = coeff(c[7]);
+#pragma GCC unroll 8
+  for (int n = 6; n >= 0; --n) s = add(mul(s, t), coeff(c[n]));
+  s = mul(s, mul(mul(t, t), t));
+  const DDE l = add(l1, s, pow_int(tau, 11) * (1.01 / 11));
+  DDE el = add(prod(E, T.ln2.p[0]), prod(E, T.ln2.p[1]));
+  el.e = (el.e + std::fabs(E) * T.ln2.res2) * kSafe;
+  const DDE nl = select(direct, exact(0.0), entry(T.log_h, T.log_l, T.log_e, i));
+  return give_up_unless(ok, add(add(el, nl), l));
+}
+
+DC_DD_INLINE DDE log1p_of(DDE x, double E, const Tables& T) {
+  // small x: u = x directly; else log(1 + x)
+  const bool direct = std::fabs(x.h) < 1.0 / 512 && x.e <= 1.0 / 1024;
+  return log_dd(select(direct, x, add(exact(1.0), x)), direct, E, T);
+}
+
+// E with x = 2^E f, 0.75 <= f < 1.5, for a positive normal x (scalar, before the vector loop)
+double exponent_of(double x) {
+  if (!(x >= 0x1p-1022) || !(x <= std::numeric_limits<double>::max())) return 0;
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  const double f = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);   // [1, 2)
+  return static_cast<double>(static_cast<int>(bits >> 52) - 1023 + (f >= 1.5 ? 1 : 0));
+}
+
+// ---- sin, cos -------------------------------------------------------------------------------
+// x = m pi/64 + r (|r| <= pi/128 + tiny), j = m mod 128; sin r = r - r^3/6 in double-double +
+// r^5 (1/120 - r^2/5040 + r^4/9! - r^6/11!) in double, rest <= tau^13/13!; cos r = 1 - r^2/2
+// + r^4 (1/24 - r^2/6! + r^4/8! - r^6/10!), rest <= tau^12/12!; then the addition theorems with
+// the tabled sin, cos of j pi/64.
+struct SinCos {
+  DDE s, c;
+};
+DC_DD_INLINE SinCos sincos_dd(DDE x, const Tables& T, bool& ok) {
+  ok = ok & (std::fabs(x.h) <= 0x1p20);
+  x = select(ok, x, exact(0.0));
+  const double m = round_int(x.h * k64OverPi);
+  const std::uint64_t j = int_bits(m) & 127;
+  DDE r = add(x, neg(prod(m, T.pi_64.p[0])));
+  r = add(r, neg(prod(m, T.pi_64.p[1])));
+  r = add(r, neg(prod(m, T.pi_64.p[2])));
+  r.e = (r.e + std::fabs(m) * T.pi_64.res3) * kSafe;
+  const double tau = mag(r);
+  ok = ok & (tau <= 0.025);
+  const DDE r2 = mul(r, r);
+  const DDE sixth{T.minus_sixth[0], T.minus_sixth[1], T.minus_sixth[2]};
+  const DE t = high(r);
+  const DE t2 = mul(t, t);
+  DE qs = coeff(-inv_fact(11));
+  qs = add(mul(qs, t2), coeff(inv_fact(9)));
+  qs = add(mul(qs, t2), coeff(-inv_fact(7)));
+  qs = add(mul(qs, t2), coeff(inv_fact(5)));
+  qs = mul(qs, mul(mul(t2, t2), t));
+  const DDE s = add(add(r, mul(mul(r2, r), sixth)), qs, pow_int(tau, 13) * (1.01 * inv_fact(13)));
+  DE qc = coeff(-inv_fact(10));
+  qc = add(mul(qc, t2), coeff(inv_fact(8)));
+  qc = add(mul(qc, t2), coeff(-inv_fact(6)));
+  qc = add(mul(qc, t2), coeff(inv_fact(4)));
+  qc = mul(qc, mul(t2, t2));
+  const DDE c = add(add(exact(1.0), scale(r2, -0.5)), qc, pow_int(tau, 12) * (1.01 * inv_fact(12)));
+  const DDE sj = entry(T.sin_h, T.sin_l, T.sin_e, j), cj = entry(T.cos_h, T.cos_l, T.cos_e, j);
+  return {add(mul(sj, c), mul(cj, s)), sub(mul(cj, c), mul(sj, s))};
+}
+
+// ---- asin, acos, atan: one Newton step from a double guess y0 --------------------------------
+// g(x) = g(c) + g'(c) (x - c) + g''(xi) (x - c)^2 / 2 with c = cos y0 (acos), sin y0 (asin):
+// |g''(xi)| = |xi| / (1 - xi^2)^(3/2) <= m / w^(3/2), m >= |xi|, w <= 1 - m^2.
+DC_DD_INLINE double arc_remainder(double d, double m) {
+  const double w = (1 - m) * (1 + m) * (1 - 0x1p-50);
+  return d * d * m / (2 * w * std::sqrt(w)) * 1.01;
+}
+DC_DD_INLINE DDE acos_of(DDE x, double y0, const Tables& T) {
+  bool ok = true;
+  const SinCos sc = sincos_dd(exact(y0), T, ok);
+  const DDE d = sub(x, sc.c);
+  const double m = std::max(mag(x), mag(sc.c));
+  ok = ok & (m <= 1 - 0x1p-30 && sc.s.h > 0);
+  DDE y = sub(exact(y0), div(d, sc.s));   // g'(c) = -1/sin y0
+  y.e = (y.e + arc_remainder(mag(d), m)) * kSafe;
+  return give_up_unless(ok, y);
+}
+DC_DD_INLINE DDE asin_of(DDE x, double y0, const Tables& T) {
+  bool ok = true;
+  const SinCos sc = sincos_dd(exact(y0), T, ok);
+  const DDE d = sub(x, sc.s);
+  const double m = std::max(mag(x), mag(sc.s));
+  ok = ok & (m <= 1 - 0x1p-30 && sc.c.h > 0);
+  DDE y = add(exact(y0), div(d, sc.c));   // g'(s) = 1/cos y0
+  y.e = (y.e + arc_remainder(mag(d), m)) * kSafe;
+  return give_up_unless(ok, y);
+}
+// atan x = y0 + (x - t)/(1 + t^2) + R, t = tan y0, |R| <= max|atan''| d^2/2 <= 0.65 d^2 / 2
+DC_DD_INLINE DDE atan_of(DDE x, double y0, const Tables& T) {
+  bool ok = true;
+  const SinCos sc = sincos_dd(exact(y0), T, ok);
+  ok = ok & (sc.c.h > 0);
+  const DDE t = div(sc.s, sc.c);
+  const DDE d = sub(x, t);
+  DDE y = add(exact(y0), div(d, add(exact(1.0), mul(t, t))));
+  const double dm = mag(d);
+  y.e = (y.e + 0.33 * dm * dm) * kSafe;
+  return give_up_unless(ok, y);
+}
+
+// ---- the block loops -------------------------------------------------------------------------
+DC_DD_INLINE DDE operand(const double* h, const double* l, const double* e, std::size_t k) { return {h[k], l[k], e[k]}; }
+DC_DD_INLINE void store(double* h, double* l, double* e, std::size_t k, DDE v) {
+  h[k] = v.h;
+  l[k] = v.l;
+  e[k] = v.e;
+}
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
+void kernel_block(Op op, double* __restrict dh, double* __restrict dl, double* __restrict de,
+                  const double* __restrict ah, const double* __restrict al, const double* __restrict ae,
+                  const double* __restrict bh, const double* __restrict bl, const double* __restrict be,
+                  const double* __restrict guess, std::size_t n) {
+  const Tables& T = tables();
+  switch (op) {
+    case Op::Exp:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, exp_of(operand(ah, al, ae, k), T));
+      break;
+    case Op::Expm1:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, expm1_of(operand(ah, al, ae, k), T));
+      break;
+    case Op::Log:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log_dd(operand(ah, al, ae, k), false, guess[k], T));
+      break;
+    case Op::Log1p:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log1p_of(operand(ah, al, ae, k), guess[k], T));
+      break;
+    case Op::Sin:
+      for (std::size_t k = 0; k < n; ++k) {
+        bool ok = true;
+        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
+        store(dh, dl, de, k, give_up_unless(ok, sc.s));
+      }
+      break;
+    case Op::Cos:
+      for (std::size_t k = 0; k < n; ++k) {
+        bool ok = true;
+        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
+        store(dh, dl, de, k, give_up_unless(ok, sc.c));
+      }
+      break;
+    case Op::Tan:
+      for (std::size_t k = 0; k < n; ++k) {
+        bool ok = true;
+        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
+        store(dh, dl, de, k, give_up_unless(ok, div(sc.s, sc.c)));
+      }
+      break;
+    case Op::Acos:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, acos_of(operand(ah, al, ae, k), guess[k], T));
+      break;
+    case Op::Asin:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, asin_of(operand(ah, al, ae, k), guess[k], T));
+      break;
+    case Op::Atan:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, atan_of(operand(ah, al, ae, k), guess[k], T));
+      break;
+    case Op::Pow:   // a^b = exp(b log a), a > 0
+      for (std::size_t k = 0; k < n; ++k)
+        store(dh, dl, de, k, exp_of(mul(operand(bh, bl, be, k), log_dd(operand(ah, al, ae, k), false, guess[k], T)), T));
+      break;
+    case Op::Hypot:
+      for (std::size_t k = 0; k < n; ++k) {
+        const DDE a = operand(ah, al, ae, k), b = operand(bh, bl, be, k);
+        store(dh, dl, de, k, sqrt(add(mul(a, a), mul(b, b))));
+      }
+      break;
+    default:
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, {0.0, 0.0, kNaN});
+      break;
+  }
+}
+
+}  // namespace
+
+bool has_kernel(Op op) {
+  switch (op) {
+    case Op::Exp: case Op::Expm1: case Op::Log: case Op::Log1p: case Op::Sin: case Op::Cos: case Op::Tan:
+    case Op::Asin: case Op::Acos: case Op::Atan: case Op::Pow: case Op::Hypot:
+      return true;
+    default:
+      return false;
+  }
+}
+
+void function_block(Op op, double* dh, double* dl, double* de, const double* ah, const double* al, const double* ae,
+                    const double* bh, const double* bl, const double* be, std::size_t n) {
+  constexpr std::size_t kMax = 64;
+  double guess[kMax];
+  for (std::size_t off = 0; off < n; off += kMax) {
+    const std::size_t m = std::min(kMax, n - off);
+    // log: the binary exponents; asin, acos, atan: the double guesses of the Newton steps (glibc;
+    // their accuracy only sizes the correction)
+    if (op == Op::Log || op == Op::Pow) {
+      for (std::size_t k = 0; k < m; ++k) guess[k] = exponent_of(ah[off + k]);
+    } else if (op == Op::Log1p) {
+      for (std::size_t k = 0; k < m; ++k) guess[k] = exponent_of(1 + ah[off + k]);
+    } else if (op == Op::Acos || op == Op::Asin || op == Op::Atan) {
+      for (std::size_t k = 0; k < m; ++k) {
+        const double a = std::clamp(ah[off + k], -1.0, 1.0);
+        guess[k] = op == Op::Acos ? std::acos(a) : op == Op::Asin ? std::asin(a) : std::atan(ah[off + k]);
+        if (!std::isfinite(guess[k])) guess[k] = 0;
+      }
+    }
+    kernel_block(op, dh + off, dl + off, de + off, ah + off, al + off, ae + off, bh ? bh + off : ah + off,
+                 bl ? bl + off : al + off, be ? be + off : ae + off, guess, m);
+  }
+}
+
+DDE apply(Op op, DDE a, DDE b) {
+  DDE d{};
+  function_block(op, &d.h, &d.l, &d.e, &a.h, &a.l, &a.e, &b.h, &b.l, &b.e, 1);
+  return d;
+}
+
+}  // namespace dc::num::dd
