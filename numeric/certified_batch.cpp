@@ -11,6 +11,7 @@
 
 #include "numeric/certified_steps.hpp"
 #include "numeric/dd_functions.hpp"
+#include "numeric/dd_tables.hpp"
 #include "numeric/double_double.hpp"
 
 namespace dc::num {
@@ -138,6 +139,9 @@ std::optional<double> round_certified(double hi, double lo, double e) {
 }
 
 CertifiedBatch::CertifiedBatch(Program p) : prog_(std::move(p)), tape_(prog_) {
+  // the kernels' tables: built here, not inside a block loop, since building them uses GiNaC
+  // (which is not thread-safe) and takes a few milliseconds
+  if (std::any_of(prog_.code.begin(), prog_.code.end(), [](const Instr& in) { return has_kernel(in.op); })) tables();
   // one more register: the scratch destination of an instruction that overwrites an operand
   hi_.assign((prog_.n_registers + 1) * kBlock, 0.0);
   lo_.assign((prog_.n_registers + 1) * kBlock, 0.0);

@@ -16,7 +16,7 @@
 //         and so on); a division by, or a square root of, an interval that may reach 0 gives up;
 //   exp, expm1, log, log1p, sin, cos, tan, asin, acos, atan, pow, hypot: double-double kernels
 //         built from the same operations, with tables computed from Arb enclosures and the
-//         truncation of their series bounded (numeric/dd_functions.hpp; about 2^-75 relative);
+//         truncation of their series bounded (numeric/dd_functions.hpp; 2^-70 relative or better);
 //         where a kernel gives up (exp beyond 708, sin beyond 2^20, acos next to +-1, ...) the
 //         long double step takes the point (certified_steps.hpp: glibc's documented long double
 //         errors, 8 ulps charged; the rounding of V to long double is measured exactly);

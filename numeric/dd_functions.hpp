@@ -8,7 +8,7 @@
 // truncation error of the series at the largest argument the bound allows. asin, acos and atan
 // correct a double guess y0 (glibc's, whose accuracy we do not need) by one Newton step through
 // the certified sin and cos of y0, with the second-order remainder bounded from the derivative.
-// The results are good to about 2^-75 relative, so that a point is undecided only when its true
+// The results are good to 2^-70 relative or better, so that a point is undecided only when its true
 // value lies that close to a rounding boundary of double.
 //
 // A function gives up (bound NaN) outside its range (|x| > 708 for exp, |x| > 2^20 for sin and
