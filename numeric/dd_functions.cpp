@@ -37,6 +37,29 @@ struct InvFact {
 constexpr InvFact kInvFact;
 DC_DD_INLINE constexpr double inv_fact(int n) { return kInvFact.v[n]; }
 
+// A series tail t^k (c_0 + c_1 s + ... + c_m s^m), s = t or t^2 (step), evaluated in plain double
+// at t = x.h, as a DE whose bound covers, against the same polynomial at x's true value:
+//   - the roundings: Horner's (Higham, Accuracy and Stability, Thm 5.1: gamma_{2m} sum |c_i||s|^i),
+//     the coefficients' (u each), that of s = t^2 (raising s^i by i u at most), the k - 1 of
+//     t^k and the final product: 2m + 1 + m + k; all of it is below (2m + 2k + 4) u smax tau^k,
+//     where smax >= sum |c_i| tau^(i step) on the kernel's range (this needs m <= k + 3 for step 2);
+//   - the perturbation |x.l| + x.e of t, times the derivative of the tail, <= dmax tau^(k-1);
+//   - underflow of the products: 2m + 2k + 4 times 2^-1060.
+// tau >= |t| and >= |x's true value|; the caller checks that tau is within the kernel's range.
+template <int M>
+DC_DD_INLINE DE poly_tail(const double (&c)[M + 1], int step, int k, DDE x, double tau, double smax, double dmax) {
+  const double t = x.h;
+  const double s = step == 2 ? t * t : t;
+  double p = c[M];
+#pragma GCC unroll 16
+  for (int i = M - 1; i >= 0; --i) p = p * s + c[i];
+  const double tk = pow_int(t, k);
+  const double rounds = 2 * M + 2 * k + 4;
+  const double e = (rounds * kU * smax * pow_int(tau, k) * 1.01 + dmax * pow_int(tau, k - 1) * (std::fabs(x.l) + x.e) +
+                    rounds * kEta) * kSafe;
+  return {p * tk, e};
+}
+
 // ---- exp ------------------------------------------------------------------------------------
 // expm1(r) for |r| <= 0.006: r + r^2/2 in double-double, r^3/6 + ... + r^8/8! in double (it is
 // below 4e-8 |r|), and the rest bounded by tau^9/9! / (1 - tau) <= 1.01 tau^9/9!.
@@ -44,11 +67,9 @@ DC_DD_INLINE DDE expm1_small(DDE r, bool& ok) {
   const double tau = mag(r);
   ok = ok & (tau <= 0.006);
   const DDE p = add(r, scale(mul(r, r), 0.5));
-  const DE t = high(r);
-  DE q = coeff(inv_fact(8));
-#pragma GCC unroll 8
-  for (int n = 7; n >= 3; --n) q = add(mul(q, t), coeff(inv_fact(n)));
-  q = mul(q, mul(mul(t, t), t));
+  // r^3 (1/6 + r/24 + ... + r^5/8!): sum |c_i| tau^i <= 0.1669, derivative <= 0.502 tau^2
+  constexpr double c[6] = {inv_fact(3), inv_fact(4), inv_fact(5), inv_fact(6), inv_fact(7), inv_fact(8)};
+  const DE q = poly_tail<5>(c, 1, 3, r, tau, 0.168, 0.51);
   return add(p, q, pow_int(tau, 9) * (1.01 * inv_fact(9)));
 }
 
@@ -108,12 +129,9 @@ DC_DD_INLINE DDE log_dd(DDE x, bool direct, double E, const Tables& T) {
   const double tau = mag(u);
   ok = ok & (tau <= 0.003);
   const DDE l1 = add(u, scale(mul(u, u), -0.5));
-  const DE t = high(u);
-  const double c[8] = {1.0 / 3, -1.0 / 4, 1.0 / 5, -1.0 / 6, 1.0 / 7, -1.0 / 8, 1.0 / 9, -1.0 / 10};
-  DE s = coeff(c[7]);
-#pragma GCC unroll 8
-  for (int n = 6; n >= 0; --n) s = add(mul(s, t), coeff(c[n]));
-  s = mul(s, mul(mul(t, t), t));
+  // u^3 (1/3 - u/4 + ... - u^7/10): sum |c_i| tau^i <= 0.3341, derivative <= 1.004 tau^2
+  constexpr double c[8] = {1.0 / 3, -1.0 / 4, 1.0 / 5, -1.0 / 6, 1.0 / 7, -1.0 / 8, 1.0 / 9, -1.0 / 10};
+  const DE s = poly_tail<7>(c, 1, 3, u, tau, 0.335, 1.01);
   const DDE l = add(l1, s, pow_int(tau, 11) * (1.01 / 11));
   DDE el = add(prod(E, T.ln2.p[0]), prod(E, T.ln2.p[1]));
   el.e = (el.e + std::fabs(E) * T.ln2.res2) * kSafe;
@@ -156,19 +174,13 @@ DC_DD_INLINE SinCos sincos_dd(DDE x, const Tables& T, bool& ok) {
   ok = ok & (tau <= 0.025);
   const DDE r2 = mul(r, r);
   const DDE sixth{T.minus_sixth[0], T.minus_sixth[1], T.minus_sixth[2]};
-  const DE t = high(r);
-  const DE t2 = mul(t, t);
-  DE qs = coeff(-inv_fact(11));
-  qs = add(mul(qs, t2), coeff(inv_fact(9)));
-  qs = add(mul(qs, t2), coeff(-inv_fact(7)));
-  qs = add(mul(qs, t2), coeff(inv_fact(5)));
-  qs = mul(qs, mul(mul(t2, t2), t));
+  // sin: r^5 (1/5! - r^2/7! + r^4/9! - r^6/11!): sum <= 0.00834, derivative <= 0.0417 tau^4
+  constexpr double cs[4] = {inv_fact(5), -inv_fact(7), inv_fact(9), -inv_fact(11)};
+  const DE qs = poly_tail<3>(cs, 2, 5, r, tau, 0.00834, 0.042);
   const DDE s = add(add(r, mul(mul(r2, r), sixth)), qs, pow_int(tau, 13) * (1.01 * inv_fact(13)));
-  DE qc = coeff(-inv_fact(10));
-  qc = add(mul(qc, t2), coeff(inv_fact(8)));
-  qc = add(mul(qc, t2), coeff(-inv_fact(6)));
-  qc = add(mul(qc, t2), coeff(inv_fact(4)));
-  qc = mul(qc, mul(t2, t2));
+  // cos: r^4 (1/4! - r^2/6! + r^4/8! - r^6/10!): sum <= 0.041668, derivative <= 0.1667 tau^3
+  constexpr double cc[4] = {inv_fact(4), -inv_fact(6), inv_fact(8), -inv_fact(10)};
+  const DE qc = poly_tail<3>(cc, 2, 4, r, tau, 0.04168, 0.167);
   const DDE c = add(add(exact(1.0), scale(r2, -0.5)), qc, pow_int(tau, 12) * (1.01 * inv_fact(12)));
   const DDE sj = entry(T.sin_h, T.sin_l, T.sin_e, j), cj = entry(T.cos_h, T.cos_l, T.cos_e, j);
   return {add(mul(sj, c), mul(cj, s)), sub(mul(cj, c), mul(sj, s))};

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
@@ -86,6 +87,9 @@ double draw(std::mt19937_64& rng, double lo, double hi) {
   return lo + u(rng) * (hi - lo);
 }
 
+// points per range (DERIVCHECK_DD_POINTS raises it for a long local sweep)
+const int kRandomPoints = std::getenv("DERIVCHECK_DD_POINTS") ? std::atoi(std::getenv("DERIVCHECK_DD_POINTS")) : 60;
+
 struct Range {
   Op op;
   double lo, hi, blo = 0, bhi = 0;
@@ -143,7 +147,7 @@ TEST_CASE("every double-double function keeps the true value within its bound", 
   std::string summary;
   for (const Range& r : ranges) {
     Tally t;
-    for (int i = 0; i < 60; ++i) {
+    for (int i = 0; i < kRandomPoints; ++i) {
       const double a = draw(rng, r.lo, r.hi);
       const double b = r.bhi > r.blo ? draw(rng, r.blo, r.bhi) : 0.0;
       check_point(r.op, a, 0, 0, b, 0, 0, t);
