@@ -59,9 +59,10 @@ struct Tally {
 
 // One point: a = ad + da exactly (|da| <= ea), likewise b; checks the bound, counts how often it
 // is tight (2^-70 relative).
-void check_point(Op op, double ad, const numeric& da, double ea, double bd, const numeric& db, double eb, Tally& t) {
-  const DDE r = dc::num::dd::apply(op, DDE{ad, 0.0, ea}, DDE{bd, 0.0, eb});
-  const ex a = dc::num::exact_rational(ad) + da, b = dc::num::exact_rational(bd) + db;
+void check_point(Op op, double ad, const numeric& da, double ea, double bd, const numeric& db, double eb, Tally& t,
+                 double al = 0) {
+  const DDE r = dc::num::dd::apply(op, DDE{ad, al, ea}, DDE{bd, 0.0, eb});
+  const ex a = dc::num::exact_rational(ad) + dc::num::exact_rational(al) + da, b = dc::num::exact_rational(bd) + db;
   GiNaC::symbol x("x");
   numeric truth;
   try {
@@ -75,7 +76,7 @@ void check_point(Op op, double ad, const numeric& da, double ea, double bd, cons
   INFO(dc::num::op_name(op) << "(" << ad << " + " << da << ", " << bd << "): " << r.h << " + " << r.l << " +- " << r.e
                             << ", truth " << truth.to_double());
   CHECK(within(truth, r.h, r.l, r.e));
-  if (ea == 0 && eb == 0) {
+  if (ea == 0 && eb == 0 && al == 0) {
     ++t.exact;
     if (r.e <= 0x1p-70 * std::fabs(truth.to_double()) + 0x1p-1000) ++t.tight;
   }
@@ -155,6 +156,11 @@ TEST_CASE("every double-double function keeps the true value within its bound", 
       std::uniform_int_distribution<long> k(-(1L << 20), 1L << 20);
       const numeric da = dc::num::exact_rational(std::ldexp(a, -60)) * numeric(k(rng), 1L << 20);
       check_point(r.op, a, da, std::fabs(std::ldexp(a, -60)), b, 0, 0, t);
+      // a double-double input (a low part of up to half an ulp) known to 2^-30: the series
+      // tails are evaluated at the high part, and their bounds must cover the rest
+      const double al = std::ldexp(a, -53) * std::uniform_real_distribution<double>(-0.5, 0.5)(rng);
+      const numeric da30 = dc::num::exact_rational(std::ldexp(a, -30)) * numeric(k(rng), 1L << 20);
+      check_point(r.op, a, da30, std::fabs(std::ldexp(a, -30)), b, 0, 0, t, al);
     }
     summary += std::string(dc::num::op_name(r.op)) + " " + std::to_string(t.tight) + "/" + std::to_string(t.exact) + "; ";
     points += t.exact;
