@@ -17,7 +17,7 @@
 namespace dc::num {
 namespace {
 
-using namespace dd;
+using namespace dde;
 constexpr double kConst = 0x1p-100;   // a constant: 40 digits (1e-39) rounded to double-double
 
 // One instruction of + - * / sqrt neg abs over n points. The destination never aliases an
@@ -41,7 +41,7 @@ void rational_block(Op op, double* __restrict dh, double* __restrict dl, double*
     case Op::Sub: for (std::size_t k = 0; k < n; ++k) put(k, add_keep_exact(A(k), neg(B(k)))); break;
     case Op::Mul: for (std::size_t k = 0; k < n; ++k) put(k, mul_keep_exact(A(k), B(k))); break;
     case Op::Div: for (std::size_t k = 0; k < n; ++k) put(k, div(A(k), B(k))); break;
-    case Op::Sqrt: for (std::size_t k = 0; k < n; ++k) put(k, dd::sqrt(A(k))); break;
+    case Op::Sqrt: for (std::size_t k = 0; k < n; ++k) put(k, dde::sqrt(A(k))); break;
     case Op::Neg: for (std::size_t k = 0; k < n; ++k) put(k, neg(A(k))); break;
     case Op::Abs:
       for (std::size_t k = 0; k < n; ++k) {

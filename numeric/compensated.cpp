@@ -5,6 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "numeric/dd_functions.hpp"
+#include "numeric/dd_tables.hpp"
+
 namespace dc::num {
 namespace dd {
 namespace {
@@ -93,9 +96,27 @@ DD log_dd(const DD& x) {
   return add(y0, add(mul(x, e), DD{-1.0, 0.0}));
 }
 
+// sin, cos, tan, asin, acos, atan, pow: the certified batch's double-double kernels (their
+// bound is not needed here, only their ~2^-70 relative accuracy or better); false where a
+// kernel gives up (sin beyond 2^20, acos next to +-1, pow of a negative base, ...)
+bool kernel_value(Op op, const DD& a, const DD& b, DD& out) {
+  using dde::DDE;
+  const DDE r = dde::apply(op, DDE{a.hi, a.lo, 0.0}, DDE{b.hi, b.lo, 0.0});
+  if (!(std::isfinite(r.e) && std::isfinite(r.h) && std::isfinite(r.l))) return false;
+  out = {r.h, r.l};
+  return true;
+}
+
 }  // namespace
 
 DD transcendental(Op op, const DD& a, const DD& b) {
+  DD k;
+  switch (op) {
+    case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos: case Op::Atan: case Op::Pow:
+      if (kernel_value(op, a, b, k)) return k;
+      break;
+    default: break;
+  }
   switch (op) {
     case Op::Exp: return exp_dd(a);
     case Op::Expm1: return expm1_dd(a);
@@ -131,6 +152,10 @@ DD transcendental(Op op, const DD& a, const DD& b) {
 }  // namespace dd
 
 CompensatedEvaluator::CompensatedEvaluator(Program p) : prog_(std::move(p)) {
+  // the kernels' tables, built here rather than on first use inside an evaluation (building
+  // them uses GiNaC, which is not thread-safe)
+  if (std::any_of(prog_.code.begin(), prog_.code.end(), [](const Instr& in) { return dde::has_kernel(in.op); }))
+    dde::tables();
   regs_.assign(prog_.n_registers, DD{});
   for (std::size_t c = 0; c < prog_.const_double.size(); ++c)
     regs_[prog_.n_inputs() + c] =

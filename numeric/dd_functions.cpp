@@ -7,7 +7,7 @@
 
 #include "numeric/dd_tables.hpp"
 
-namespace dc::num::dd {
+namespace dc::num::dde {
 namespace {
 
 constexpr double k64OverLn2 = 92.332482616893656877;   // only picks m: any rounding will do
@@ -343,4 +343,4 @@ DDE apply(Op op, DDE a, DDE b) {
   return d;
 }
 
-}  // namespace dc::num::dd
+}  // namespace dc::num::dde

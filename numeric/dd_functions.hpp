@@ -19,7 +19,7 @@
 #include "numeric/double_double.hpp"
 #include "numeric/evaluator.hpp"
 
-namespace dc::num::dd {
+namespace dc::num::dde {
 
 // Whether op has a double-double kernel here.
 bool has_kernel(Op op);
@@ -32,4 +32,4 @@ void function_block(Op op, double* dh, double* dl, double* de, const double* ah,
 // One point (tests).
 DDE apply(Op op, DDE a, DDE b = {});
 
-}  // namespace dc::num::dd
+}  // namespace dc::num::dde

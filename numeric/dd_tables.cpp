@@ -9,7 +9,7 @@
 #include "derivations/kernel/ball.hpp"
 #include "numeric/double_double.hpp"
 
-namespace dc::num::dd {
+namespace dc::num::dde {
 namespace {
 
 using GiNaC::ex;
@@ -103,4 +103,4 @@ const Tables& tables() {
   return t;
 }
 
-}  // namespace dc::num::dd
+}  // namespace dc::num::dde

@@ -7,7 +7,7 @@
 #pragma once
 #include <cstddef>
 
-namespace dc::num::dd {
+namespace dc::num::dde {
 
 // c = p[0] + p[1] + p[2] + r with |r| <= res3, and |c - p[0] - p[1]| <= res2.
 struct Split3 {
@@ -32,4 +32,4 @@ struct Tables {
 // expected: every entry is a well-conditioned constant).
 const Tables& tables();
 
-}  // namespace dc::num::dd
+}  // namespace dc::num::dde

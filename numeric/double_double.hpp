@@ -29,7 +29,7 @@
 #define DC_DD_INLINE inline
 #endif
 
-namespace dc::num::dd {
+namespace dc::num::dde {
 
 inline constexpr double kU = 0x1p-53;        // unit roundoff of double
 inline constexpr double kAdd = 0x1p-103;     // 8u^2: a double-double sum, relative to |h| (cited 3u^2)
@@ -194,4 +194,4 @@ DC_DD_INLINE DDE add(DDE a, DE b, double extra) {
   return s;
 }
 
-}  // namespace dc::num::dd
+}  // namespace dc::num::dde

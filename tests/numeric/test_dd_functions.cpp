@@ -25,7 +25,7 @@ namespace {
 using GiNaC::ex;
 using GiNaC::numeric;
 using dc::num::Op;
-using dc::num::dd::DDE;
+using dc::num::dde::DDE;
 
 numeric abs_num(const numeric& x) { return x < 0 ? -x : x; }
 numeric value_of(double h, double l) { return dc::num::exact_rational(h) + dc::num::exact_rational(l); }
@@ -61,7 +61,7 @@ struct Tally {
 // is tight (2^-70 relative).
 void check_point(Op op, double ad, const numeric& da, double ea, double bd, const numeric& db, double eb, Tally& t,
                  double al = 0) {
-  const DDE r = dc::num::dd::apply(op, DDE{ad, al, ea}, DDE{bd, 0.0, eb});
+  const DDE r = dc::num::dde::apply(op, DDE{ad, al, ea}, DDE{bd, 0.0, eb});
   const ex a = dc::num::exact_rational(ad) + dc::num::exact_rational(al) + da, b = dc::num::exact_rational(bd) + db;
   GiNaC::symbol x("x");
   numeric truth;
@@ -99,11 +99,11 @@ struct Range {
 }  // namespace
 
 TEST_CASE("the double-double tables hold their values within their bounds", "[numeric][certified][dd]") {
-  const auto& T = dc::num::dd::tables();
+  const auto& T = dc::num::dde::tables();
   using GiNaC::Pi;
   const ex ln2 = GiNaC::log(ex(2));
   auto ref = [](const ex& c) { return dc::num::reference_value(c, {}, 60); };
-  auto split = [&](const dc::num::dd::Split3& s, const ex& c) {
+  auto split = [&](const dc::num::dde::Split3& s, const ex& c) {
     const numeric v = ref(c);
     CHECK(abs_num(v - value_of(s.p[0], s.p[1])) <= dc::num::exact_rational(s.res2));
     CHECK(abs_num(v - value_of(s.p[0], s.p[1]) - dc::num::exact_rational(s.p[2])) <= dc::num::exact_rational(s.res3));
@@ -208,7 +208,7 @@ TEST_CASE("double-double functions at the hard places", "[numeric][certified][dd
 
 TEST_CASE("double-double functions give up outside their ranges", "[numeric][certified][dd]") {
   auto gives_up = [](Op op, double a, double b = 0) {
-    const DDE r = dc::num::dd::apply(op, DDE{a, 0.0, 0.0}, DDE{b, 0.0, 0.0});
+    const DDE r = dc::num::dde::apply(op, DDE{a, 0.0, 0.0}, DDE{b, 0.0, 0.0});
     return !std::isfinite(r.e);
   };
   CHECK(gives_up(Op::Exp, 710));
@@ -223,6 +223,6 @@ TEST_CASE("double-double functions give up outside their ranges", "[numeric][cer
   CHECK(gives_up(Op::Pow, -2, 0.5));
   CHECK(gives_up(Op::Exp, std::numeric_limits<double>::quiet_NaN()));
   // an input interval wider than a kernel's reduced range gives up too
-  CHECK(!std::isfinite(dc::num::dd::apply(Op::Exp, DDE{1.0, 0.0, 0.5}).e));
-  CHECK(!std::isfinite(dc::num::dd::apply(Op::Log, DDE{1.0, 0.0, 0.5}).e));
+  CHECK(!std::isfinite(dc::num::dde::apply(Op::Exp, DDE{1.0, 0.0, 0.5}).e));
+  CHECK(!std::isfinite(dc::num::dde::apply(Op::Log, DDE{1.0, 0.0, 0.5}).e));
 }
