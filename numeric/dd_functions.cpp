@@ -186,6 +186,13 @@ DC_DD_INLINE SinCos sincos_dd(DDE x, const Tables& T, bool& ok) {
   return {add(mul(sj, c), mul(cj, s)), sub(mul(cj, c), mul(sj, s))};
 }
 
+// op is a constant of each loop that calls this (Sin, Cos or Tan): the selection folds away
+DC_DD_INLINE DDE sin_cos_tan_of(Op op, DDE x, const Tables& T) {
+  bool ok = true;
+  const SinCos sc = sincos_dd(x, T, ok);
+  return give_up_unless(ok, op == Op::Sin ? sc.s : op == Op::Cos ? sc.c : div(sc.s, sc.c));
+}
+
 // ---- asin, acos, atan: one Newton step from a double guess y0 --------------------------------
 // g(x) = g(c) + g'(c) (x - c) + g''(xi) (x - c)^2 / 2 with c = cos y0 (acos), sin y0 (asin):
 // |g''(xi)| = |xi| / (1 - xi^2)^(3/2) <= m / w^(3/2), m >= |xi|, w <= 1 - m^2.
@@ -256,25 +263,13 @@ void kernel_block(Op op, double* __restrict dh, double* __restrict dl, double* _
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log1p_of(operand(ah, al, ae, k), guess[k], T));
       break;
     case Op::Sin:
-      for (std::size_t k = 0; k < n; ++k) {
-        bool ok = true;
-        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
-        store(dh, dl, de, k, give_up_unless(ok, sc.s));
-      }
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, sin_cos_tan_of(op, operand(ah, al, ae, k), T));
       break;
     case Op::Cos:
-      for (std::size_t k = 0; k < n; ++k) {
-        bool ok = true;
-        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
-        store(dh, dl, de, k, give_up_unless(ok, sc.c));
-      }
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, sin_cos_tan_of(op, operand(ah, al, ae, k), T));
       break;
     case Op::Tan:
-      for (std::size_t k = 0; k < n; ++k) {
-        bool ok = true;
-        const SinCos sc = sincos_dd(operand(ah, al, ae, k), T, ok);
-        store(dh, dl, de, k, give_up_unless(ok, div(sc.s, sc.c)));
-      }
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, sin_cos_tan_of(op, operand(ah, al, ae, k), T));
       break;
     case Op::Acos:
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, acos_of(operand(ah, al, ae, k), guess[k], T));
