@@ -111,12 +111,19 @@ DC_DD_INLINE DDE expm1_of(DDE x, const Tables& T) {
 // log x = E ln2 - log r_j + log1p(u), x = 2^E f (0.75 <= f < 1.5), u = f r_j - 1 (|u| <= 0.0027),
 // log1p(u) = u - u^2/2 in double-double + u^3 (1/3 - u/4 + ... - u^7/10) in double, the rest
 // <= tau^11/11 / (1 - tau). direct: x is already u (log1p of a small argument), E = 0, j = 0.
-DC_DD_INLINE DDE log_dd(DDE x, bool direct, double E, const Tables& T) {
-  bool ok = direct || (x.h >= 0x1p-1022 && x.h < 0x1.8p1022 && x.e <= x.h / 4 && std::fabs(E) <= 1022);
-  E = direct || !ok ? 0.0 : E;
+// E with x = 2^E f, 0.75 <= f < 1.5, for a positive normal x (bit operations only: vectorised)
+DC_DD_INLINE double exponent_of(double x) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  const double field = std::bit_cast<double>((bits >> 52) | 0x4330000000000000ULL) - 0x1p52;   // biased
+  const double f = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);   // [1, 2)
+  return field - 1023 + (f >= 1.5 ? 1.0 : 0.0);
+}
+
+DC_DD_INLINE DDE log_dd(DDE x, bool direct, const Tables& T) {
+  bool ok = direct || (x.h >= 0x1p-1022 && x.h < 0x1.8p1022 && x.e <= x.h / 4);
+  const double E = direct || !ok ? 0.0 : exponent_of(x.h);   // |E| <= 1022
   const DDE F = select(direct, exact(1.0), scale(select(ok, x, exact(1.0)), pow2(-E)));
-  // E from the caller (exponent_of) puts F.h in [0.75, 1.5), j in [-64, 128]; should it not, the
-  // padding entries (r = 1) serve and u is too large below
+  // F.h in [0.75, 1.5): j in [-64, 128] (the padding entries, r = 1, are never needed)
   const double j = round_int((F.h - 1) * 256);
   const std::uint64_t i = int_bits(j + 64) & 255;
   const double r = T.log_r[i];
@@ -139,18 +146,10 @@ DC_DD_INLINE DDE log_dd(DDE x, bool direct, double E, const Tables& T) {
   return give_up_unless(ok, add(add(el, nl), l));
 }
 
-DC_DD_INLINE DDE log1p_of(DDE x, double E, const Tables& T) {
+DC_DD_INLINE DDE log1p_of(DDE x, const Tables& T) {
   // small x: u = x directly; else log(1 + x)
   const bool direct = std::fabs(x.h) < 1.0 / 512 && x.e <= 1.0 / 1024;
-  return log_dd(select(direct, x, add(exact(1.0), x)), direct, E, T);
-}
-
-// E with x = 2^E f, 0.75 <= f < 1.5, for a positive normal x (scalar, before the vector loop)
-double exponent_of(double x) {
-  if (!(x >= 0x1p-1022) || !(x <= std::numeric_limits<double>::max())) return 0;
-  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
-  const double f = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);   // [1, 2)
-  return static_cast<double>(static_cast<int>(bits >> 52) - 1023 + (f >= 1.5 ? 1 : 0));
+  return log_dd(select(direct, x, add(exact(1.0), x)), direct, T);
 }
 
 // ---- sin, cos -------------------------------------------------------------------------------
@@ -257,10 +256,10 @@ void kernel_block(Op op, double* __restrict dh, double* __restrict dl, double* _
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, expm1_of(operand(ah, al, ae, k), T));
       break;
     case Op::Log:
-      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log_dd(operand(ah, al, ae, k), false, guess[k], T));
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log_dd(operand(ah, al, ae, k), false, T));
       break;
     case Op::Log1p:
-      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log1p_of(operand(ah, al, ae, k), guess[k], T));
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, log1p_of(operand(ah, al, ae, k), T));
       break;
     case Op::Sin:
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, sin_cos_tan_of(op, operand(ah, al, ae, k), T));
@@ -282,7 +281,7 @@ void kernel_block(Op op, double* __restrict dh, double* __restrict dl, double* _
       break;
     case Op::Pow:   // a^b = exp(b log a), a > 0
       for (std::size_t k = 0; k < n; ++k)
-        store(dh, dl, de, k, exp_of(mul(operand(bh, bl, be, k), log_dd(operand(ah, al, ae, k), false, guess[k], T)), T));
+        store(dh, dl, de, k, exp_of(mul(operand(bh, bl, be, k), log_dd(operand(ah, al, ae, k), false, T)), T));
       break;
     case Op::Hypot:
       for (std::size_t k = 0; k < n; ++k) {
@@ -314,13 +313,9 @@ void function_block(Op op, double* dh, double* dl, double* de, const double* ah,
   double guess[kMax];
   for (std::size_t off = 0; off < n; off += kMax) {
     const std::size_t m = std::min(kMax, n - off);
-    // log: the binary exponents; asin, acos, atan: the double guesses of the Newton steps (glibc;
-    // their accuracy only sizes the correction)
-    if (op == Op::Log || op == Op::Pow) {
-      for (std::size_t k = 0; k < m; ++k) guess[k] = exponent_of(ah[off + k]);
-    } else if (op == Op::Log1p) {
-      for (std::size_t k = 0; k < m; ++k) guess[k] = exponent_of(1 + ah[off + k]);
-    } else if (op == Op::Acos || op == Op::Asin || op == Op::Atan) {
+    // asin, acos, atan: the double guesses of the Newton steps (glibc; their accuracy only sizes
+    // the correction)
+    if (op == Op::Acos || op == Op::Asin || op == Op::Atan) {
       for (std::size_t k = 0; k < m; ++k) {
         const double a = std::clamp(ah[off + k], -1.0, 1.0);
         guess[k] = op == Op::Acos ? std::acos(a) : op == Op::Asin ? std::asin(a) : std::atan(ah[off + k]);
