@@ -199,23 +199,18 @@ DC_DD_INLINE double arc_remainder(double d, double m) {
   const double w = (1 - m) * (1 + m) * (1 - 0x1p-50);
   return d * d * m / (2 * w * std::sqrt(w)) * 1.01;
 }
-DC_DD_INLINE DDE acos_of(DDE x, double y0, const Tables& T) {
+// acos x = y0 - (x - cos y0)/sin y0 + R, asin x = y0 + (x - sin y0)/cos y0 + R (is_acos is a
+// constant of each loop that calls this)
+DC_DD_INLINE DDE arc_of(bool is_acos, DDE x, double y0, const Tables& T) {
   bool ok = true;
   const SinCos sc = sincos_dd(exact(y0), T, ok);
-  const DDE d = sub(x, sc.c);
-  const double m = std::max(mag(x), mag(sc.c));
-  ok = ok & (m <= 1 - 0x1p-30 && sc.s.h > 0);
-  DDE y = sub(exact(y0), div(d, sc.s));   // g'(c) = -1/sin y0
-  y.e = (y.e + arc_remainder(mag(d), m)) * kSafe;
-  return give_up_unless(ok, y);
-}
-DC_DD_INLINE DDE asin_of(DDE x, double y0, const Tables& T) {
-  bool ok = true;
-  const SinCos sc = sincos_dd(exact(y0), T, ok);
-  const DDE d = sub(x, sc.s);
-  const double m = std::max(mag(x), mag(sc.s));
-  ok = ok & (m <= 1 - 0x1p-30 && sc.c.h > 0);
-  DDE y = add(exact(y0), div(d, sc.c));   // g'(s) = 1/cos y0
+  const DDE c = is_acos ? sc.c : sc.s;       // the point whose acos (asin) is y0
+  const DDE slope = is_acos ? sc.s : sc.c;   // 1/|g'(c)|, positive on the principal branch
+  const DDE d = sub(x, c);
+  const double m = std::max(mag(x), mag(c));
+  ok = ok & (m <= 1 - 0x1p-30 && slope.h > 0);
+  const DDE q = div(d, slope);
+  DDE y = add(exact(y0), is_acos ? neg(q) : q);
   y.e = (y.e + arc_remainder(mag(d), m)) * kSafe;
   return give_up_unless(ok, y);
 }
@@ -271,10 +266,10 @@ void kernel_block(Op op, double* __restrict dh, double* __restrict dl, double* _
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, sin_cos_tan_of(op, operand(ah, al, ae, k), T));
       break;
     case Op::Acos:
-      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, acos_of(operand(ah, al, ae, k), guess[k], T));
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, arc_of(true, operand(ah, al, ae, k), guess[k], T));
       break;
     case Op::Asin:
-      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, asin_of(operand(ah, al, ae, k), guess[k], T));
+      for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, arc_of(false, operand(ah, al, ae, k), guess[k], T));
       break;
     case Op::Atan:
       for (std::size_t k = 0; k < n; ++k) store(dh, dl, de, k, atan_of(operand(ah, al, ae, k), guess[k], T));
