@@ -1,5 +1,6 @@
 // The double-double functions (dd_functions.hpp). Compiled with -ffp-contract=off (CMakeLists):
-// the error-free transformations need every operation rounded as written.
+// the error-free transformations need every operation rounded as written; and with
+// -fno-math-errno -fno-trapping-math, without which GCC does not vectorise the loops.
 #include "numeric/dd_functions.hpp"
 
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace {
 
 constexpr double k64OverLn2 = 92.332482616893656877;   // only picks m: any rounding will do
 constexpr double k64OverPi = 20.371832715762602978;
-constexpr double kLn2Over128 = 0.0054152123481245725;   // ln2/128 rounded down
 
 DC_DD_INLINE DDE select(bool c, DDE a, DDE b) { return {c ? a.h : b.h, c ? a.l : b.l, c ? a.e : b.e}; }
 DC_DD_INLINE DDE entry(const double* h, const double* l, const double* e, std::size_t i) { return {h[i], l[i], e[i]}; }
@@ -108,9 +108,6 @@ DC_DD_INLINE DDE expm1_of(DDE x, const Tables& T) {
 }
 
 // ---- log ------------------------------------------------------------------------------------
-// log x = E ln2 - log r_j + log1p(u), x = 2^E f (0.75 <= f < 1.5), u = f r_j - 1 (|u| <= 0.0027),
-// log1p(u) = u - u^2/2 in double-double + u^3 (1/3 - u/4 + ... - u^7/10) in double, the rest
-// <= tau^11/11 / (1 - tau). direct: x is already u (log1p of a small argument), E = 0, j = 0.
 // E with x = 2^E f, 0.75 <= f < 1.5, for a positive normal x (bit operations only: vectorised)
 DC_DD_INLINE double exponent_of(double x) {
   const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
@@ -119,6 +116,9 @@ DC_DD_INLINE double exponent_of(double x) {
   return field - 1023 + (f >= 1.5 ? 1.0 : 0.0);
 }
 
+// log x = E ln2 - log r_j + log1p(u), x = 2^E f (0.75 <= f < 1.5), u = f r_j - 1 (|u| <= 0.0027),
+// log1p(u) = u - u^2/2 in double-double + u^3 (1/3 - u/4 + ... - u^7/10) in double, the rest
+// <= tau^11/11 / (1 - tau). direct: x is already u (log1p of a small argument), E = 0, j = 0.
 DC_DD_INLINE DDE log_dd(DDE x, bool direct, const Tables& T) {
   bool ok = direct || (x.h >= 0x1p-1022 && x.h < 0x1.8p1022 && x.e <= x.h / 4);
   const double E = direct || !ok ? 0.0 : exponent_of(x.h);   // |E| <= 1022
@@ -172,11 +172,11 @@ DC_DD_INLINE SinCos sincos_dd(DDE x, const Tables& T, bool& ok) {
   const double tau = mag(r);
   ok = ok & (tau <= 0.025);
   const DDE r2 = mul(r, r);
-  const DDE sixth{T.minus_sixth[0], T.minus_sixth[1], T.minus_sixth[2]};
+  const DDE minus_sixth{T.minus_sixth[0], T.minus_sixth[1], T.minus_sixth[2]};
   // sin: r^5 (1/5! - r^2/7! + r^4/9! - r^6/11!): sum <= 0.00834, derivative <= 0.0417 tau^4
   constexpr double cs[4] = {inv_fact(5), -inv_fact(7), inv_fact(9), -inv_fact(11)};
   const DE qs = poly_tail<3>(cs, 2, 5, r, tau, 0.00834, 0.042);
-  const DDE s = add(add(r, mul(mul(r2, r), sixth)), qs, pow_int(tau, 13) * (1.01 * inv_fact(13)));
+  const DDE s = add(add(r, mul(mul(r2, r), minus_sixth)), qs, pow_int(tau, 13) * (1.01 * inv_fact(13)));
   // cos: r^4 (1/4! - r^2/6! + r^4/8! - r^6/10!): sum <= 0.041668, derivative <= 0.1667 tau^3
   constexpr double cc[4] = {inv_fact(4), -inv_fact(6), inv_fact(8), -inv_fact(10)};
   const DE qc = poly_tail<3>(cc, 2, 4, r, tau, 0.04168, 0.167);

@@ -14,8 +14,8 @@
 //   operand errors propagate as in interval arithmetic (|A| eb + |B| ea + ea eb, ...);
 //   every operation adds kEta (roundings of subnormal low parts), and the bound's own
 //        arithmetic (round to nearest) is covered by the factor kSafe per operation.
-// A DE is a plain double with a bound (|fl(x) - x| <= u |fl(x)| for round to nearest): the
-// cheap arithmetic of polynomial tails whose size makes double's precision enough.
+// A DE is a plain double with a bound on its error: a polynomial tail small enough for double's
+// precision, bounded a priori by its caller (dd_functions.cpp, poly_tail), then added into a DDE.
 // Needs every operation rounded as written: compile users with -ffp-contract=off.
 #pragma once
 #include <bit>
@@ -175,18 +175,6 @@ DC_DD_INLINE DDE sqrt(DDE a) {
 struct DE {
   double v, e;
 };
-// a rounded coefficient: |RN(q) - q| <= u |RN(q)|
-DC_DD_INLINE DE coeff(double rounded) { return {rounded, kU * std::fabs(rounded)}; }
-DC_DD_INLINE DE add(DE a, DE b) {
-  const double v = a.v + b.v;
-  return {v, (a.e + b.e + kU * std::fabs(v) + kEta) * kSafe};
-}
-DC_DD_INLINE DE mul(DE a, DE b) {
-  const double v = a.v * b.v;
-  return {v, (std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v) + kEta) * kSafe};
-}
-// the high part of a DDE as a DE (its low part and bound become the error)
-DC_DD_INLINE DE high(DDE a) { return {a.h, (std::fabs(a.l) + a.e) * kSafe}; }
 // a DE added into a DDE, with `extra` (e.g. a truncation bound) added to the bound
 DC_DD_INLINE DDE add(DDE a, DE b, double extra) {
   DDE s = add(a, DDE{b.v, 0.0, 0.0});

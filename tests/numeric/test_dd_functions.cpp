@@ -205,7 +205,7 @@ TEST_CASE("double-double functions at the hard places", "[numeric][certified][dd
   }
   for (double x : {1e300, -1e300, 1e16, 1e8}) check_point(Op::Atan, x, 0, 0, 0, 0, 0, t);
   INFO(t.answered << " of " << t.points << " answered, " << t.tight << " to 2^-70");
-  CHECK(t.answered >= t.points / 2);
+  CHECK(t.answered >= t.points * 95 / 100);   // 584 of 590 when written (the rest: +-1, huge, subnormal)
 }
 
 TEST_CASE("double-double functions give up outside their ranges", "[numeric][certified][dd]") {
