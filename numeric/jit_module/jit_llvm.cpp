@@ -23,6 +23,7 @@
 #include <llvm/Support/raw_ostream.h>
 
 #include "numeric/jit_internal.hpp"
+#include "numeric/jit_module/jit_arcsine.hpp"
 
 // SLEEF 3.5.1 (libsleef3), one symbol per function and instruction set; the names are checked
 // against `nm -D libsleef.so`. u10: max error 1.0 ulp; u05: 0.5001 ulp (SLEEF's documentation;
@@ -52,14 +53,16 @@ struct SleefFn {
 struct IsaSpec {
   const char* name;
   int width;
+  bool fma;  // fused multiply-add in hardware: asin and acos inline (jit_arcsine.hpp), not SLEEF
   std::array<SleefFn, 12> fns;  // exp expm1 log log1p sin cos tan asin acos atan pow hypot
 };
 
+// numeric/jit.cpp picks avx2 only where the CPU also has FMA
 const IsaSpec kIsas[] = {
-    {"avx512f", 8, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d8, avx512f)}}},
-    {"avx2", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx2)}}},
-    {"avx", 4, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx)}}},
-    {"sse2", 2, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d2, sse2)}}},
+    {"avx512f", 8, true, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d8, avx512f)}}},
+    {"avx2", 4, true, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx2)}}},
+    {"avx", 4, false, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d4, avx)}}},
+    {"sse2", 2, false, {{DC_SLEEF_FNS(DC_SLEEF_ENTRY, d2, sse2)}}},
 };
 
 struct Session {
@@ -174,6 +177,7 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
       case Op::Abs: return b.CreateUnaryIntrinsic(Intrinsic::fabs, a);
       default: break;
     }
+    if (isa.fma && (in.op == Op::Asin || in.op == Op::Acos)) return jitir::emit_arcsine(b, a, in.op == Op::Acos);
     const int k = sleef_index(in.op);
     Value* r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
     if (in.op == Op::Log1p) {
