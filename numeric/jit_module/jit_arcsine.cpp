@@ -5,7 +5,7 @@
 //   a < 1/2:  s = a,        z = x^2 (rounded),   asin(a) = s + s z P(z)
 //   a >= 1/2: s ~ sqrt(z),  z = (1 - a)/2 exact, asin(a) = pi/2 - 2 asin(sqrt z)
 // and z in [0, 1/4] either way. P is a degree-12 polynomial fitted by Remez exchange
-// (tools/fit_arcsine.py): |z (P_true - P)| <= 2^-58.19 on [0, 1/4] with the coefficients as
+// (tools/fit_jit_polynomials.py asin): |z (P_true - P)| <= 2^-58.19 on [0, 1/4] with the coefficients as
 // doubles. The upper range uses no division and no square root instruction (the divider is
 // what the rest of a formula already waits on): y ~ 1/sqrt(z) from the hardware estimate
 // (2^-14 with AVX-512, 1.5 2^-12 with AVX2's float one) and one Newton step (2^-21 or better),
@@ -38,7 +38,7 @@ namespace dc::num::jitir {
 
 namespace {
 
-// tools/fit_arcsine.py
+// tools/fit_jit_polynomials.py asin
 constexpr std::array<double, 13> kP = {
     0.16666666666666702,   0.07499999999984511,  0.04464285716363594,   0.030381943144576987,
     0.022372204933033622,  0.017351756627662213, 0.01397947103515358,   0.01140715396380983,

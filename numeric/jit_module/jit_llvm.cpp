@@ -1,6 +1,7 @@
 // The JIT module libderivcheck_jit.so (numeric/jit.hpp, numeric/jit_internal.hpp): a Program
 // as LLVM IR on <W x double>, compiled by LLVM 14 ORC (LLJIT) for the host CPU, transcendental
-// functions as calls to SLEEF. One LLJIT per kernel: the kernel owns its code and frees it with
+// functions as calls to SLEEF (asin, acos, sin and cos inline where the instruction set has FMA:
+// jit_arcsine.hpp, jit_sincos.hpp). One LLJIT per kernel: the kernel owns its code and frees it with
 // itself, and kernels compiled on different threads share nothing.
 #include <array>
 #include <cmath>
@@ -24,6 +25,7 @@
 
 #include "numeric/jit_internal.hpp"
 #include "numeric/jit_module/jit_arcsine.hpp"
+#include "numeric/jit_module/jit_sincos.hpp"
 
 // SLEEF 3.5.1 (libsleef3), one symbol per function and instruction set; the names are checked
 // against `nm -D libsleef.so`. u10: max error 1.0 ulp; u05: 0.5001 ulp (SLEEF's documentation;
@@ -177,28 +179,35 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
       case Op::Abs: return b.CreateUnaryIntrinsic(Intrinsic::fabs, a);
       default: break;
     }
-    if (isa.fma && (in.op == Op::Asin || in.op == Op::Acos)) return jitir::emit_arcsine(b, a, in.op == Op::Acos);
-    const int k = sleef_index(in.op);
-    Value* r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : b.CreateCall(sleef(k, 1), {a});
-    if (in.op == Op::Log1p) {
-      // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and
-      // log(x) is log1p(x) to within 1e-300 relative. Lanes above 1e300 (rare: a branch
-      // over the fix-up, not a second call per vector) take log(x).
-      Value* big = b.CreateFCmpOGT(a, splat(1e300));
-      Value* any = b.CreateOrReduce(big);
+    // Lanes `bad` take the value of `fallback()`, which is emitted in a block of its own that
+    // runs only when some lane of the vector needs it (ordinary data never does).
+    auto patch = [&](Value* bad, Value* r, auto&& fallback) -> Value* {
       BasicBlock* from = b.GetInsertBlock();
-      BasicBlock* fix = BasicBlock::Create(ctx, "log1p_big", f, tail_head);
-      BasicBlock* cont = BasicBlock::Create(ctx, "log1p_cont", f, tail_head);
-      b.CreateCondBr(any, fix, cont);
+      BasicBlock* fix = BasicBlock::Create(ctx, "fix", f, tail_head);
+      BasicBlock* cont = BasicBlock::Create(ctx, "cont", f, tail_head);
+      b.CreateCondBr(b.CreateOrReduce(bad), fix, cont);
       b.SetInsertPoint(fix);
-      Value* l = b.CreateSelect(big, b.CreateCall(sleef(sleef_index(Op::Log), 1), {a}), r);
+      Value* l = b.CreateSelect(bad, fallback(), r);
+      BasicBlock* fixed = b.GetInsertBlock();
       b.CreateBr(cont);
       b.SetInsertPoint(cont);
       PHINode* phi = b.CreatePHI(vec, 2);
       phi->addIncoming(r, from);
-      phi->addIncoming(l, fix);
-      r = phi;
+      phi->addIncoming(l, fixed);
+      return phi;
+    };
+    const int k = sleef_index(in.op);
+    auto call = [&](int fn) { return b.CreateCall(sleef(fn, 1), {a}); };
+    if (isa.fma && (in.op == Op::Asin || in.op == Op::Acos)) return jitir::emit_arcsine(b, a, in.op == Op::Acos);
+    if (isa.fma && (in.op == Op::Sin || in.op == Op::Cos)) {
+      // inline up to |x| = 2^19 (jit_sincos.hpp), SLEEF beyond and for inf and NaN
+      const jitir::InlineResult r = jitir::emit_sincos(b, a, in.op == Op::Cos);
+      return patch(r.outside, r.value, [&] { return call(k); });
     }
+    Value* r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : call(k);
+    // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and log(x)
+    // is log1p(x) to within 1e-300 relative. Lanes above 1e300 take log(x).
+    if (in.op == Op::Log1p) r = patch(b.CreateFCmpOGT(a, splat(1e300)), r, [&] { return call(sleef_index(Op::Log)); });
     return r;
   };
   // The program on `u` vectors at points i, i + W, ...: instruction by instruction.

@@ -269,6 +269,65 @@ TEST_CASE("JIT: inline asin and acos below 0.9 ulp near 1/2, near 1, tiny and ra
   }
 }
 
+TEST_CASE("JIT: inline sin and cos below 0.9 ulp near multiples of pi/4, tiny, random and up to 2^19, with AVX-512 and AVX2", "[numeric][jit]") {
+  // numeric/jit_module/jit_sincos.cpp derives 0.9 ulp up to |x| = 2^19 (SLEEF beyond: 1 ulp).
+  // Points: next to k pi/4 (where the reduced argument is smallest or the quadrant changes),
+  // the double nearest to k pi/2 for large k (the reduction's hardest cancellation), tiny and
+  // subnormal x, log-uniform up to 2^19 and a little beyond.
+  if (!jit_enabled()) { WARN("no JIT in this build"); return; }
+  std::mt19937_64 rng(92);
+  std::vector<double> pts;
+  const double quarter = 0.78539816339744830962;
+  for (int k = 1; k <= 64; ++k)
+    for (int d = -3; d <= 3; ++d) pts.push_back(std::nextafter(k * quarter, 0.0) + d * std::ldexp(1.0, std::ilogb(k * quarter) - 52));
+  for (int i = 0; i < 300; ++i) {
+    const double k = std::floor(std::pow(2.0, std::uniform_real_distribution<double>(0, 19.6)(rng)));
+    pts.push_back(k * 1.5707963267948966);
+  }
+  for (int i = 0; i < 300; ++i) pts.push_back(logu(rng, -320, -3, false));
+  for (int i = 0; i < 2500; ++i) pts.push_back(logu(rng, -3, 5.72, false));
+  for (int i = 0; i < 100; ++i) pts.push_back(logu(rng, 5.72, 6, false));
+  pts.push_back(0x1p19), pts.push_back(std::nextafter(0x1p19, 1e9));
+  const std::size_t half = pts.size();
+  for (std::size_t i = 0; i < half; ++i) pts.push_back(-pts[i]);
+  const std::size_t n = pts.size();
+  const std::vector<std::vector<double>> cols = {pts, std::vector<double>(n, 0.0)};
+  for (const bool cos : {false, true}) {
+    const ex f = cos ? GiNaC::cos(x) : GiNaC::sin(x);
+    INFO(f);
+    const Program p = compile(f, {x, y});
+    std::vector<GiNaC::numeric> ref(n);
+    for (std::size_t i = 0; i < n; ++i) ref[i] = reference_value(f, {{x, exact_rational(pts[i])}}, 25);
+    for (const char* isa : {"avx512f", "avx2"}) {
+      std::string why;
+      auto kern = JitKernel::compile(p, &why, isa);
+      if (!kern) {
+        WARN(isa << " not tested here: " << why);
+        continue;
+      }
+      INFO(isa);
+      const auto got = run(*kern, cols, n);
+      double worst = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        INFO("x = " << std::hexfloat << pts[i] << ": " << got[i] << std::defaultfloat);
+        const double e = error_in_ulps(got[i], ref[i]);
+        worst = std::max(worst, e);
+        REQUIRE(e < (std::fabs(pts[i]) <= 0x1p19 ? 0.9 : 1.0));
+      }
+      WARN((cos ? "cos" : "sin") << " inline, " << isa << ": max error " << worst << " ulp on " << n << " points");
+    }
+  }
+  // signed zero and the values outside the inline range
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::vector<double>> sv = {{-0.0, 0.0, inf, -inf, std::nan(""), 1e300}, std::vector<double>(6, 0.0)};
+  for (const ex f : {GiNaC::sin(x), GiNaC::cos(x)}) {
+    const Program p = compile(f, {x, y});
+    const auto got = run(*jit_of(p), sv, 6), want = tape(p, sv, 6);
+    for (std::size_t i = 0; i < 5; ++i) REQUIRE(same_bits(got[i], want[i]));
+    REQUIRE(std::fabs(got[5] - want[5]) <= 2 * std::fabs(want[5]) * 0x1p-52);
+  }
+}
+
 TEST_CASE("JIT: one kernel called from two threads at once", "[numeric][jit]") {
   if (!jit_enabled()) { WARN("no JIT in this build"); return; }
   const Program p = compile(GiNaC::sin(x) * GiNaC::exp(y) + x / y, {x, y});
