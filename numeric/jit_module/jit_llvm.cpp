@@ -114,6 +114,21 @@ double power_of_two_reciprocal(const Program& p, const Instr& in) {
   return r != 0 && std::isfinite(r) && r * c == 1.0 ? r : 0;
 }
 
+// For a division by a constant c whose reciprocal y = RN(1/c) has relative error at most 2^-54:
+// y, else 0. Then for |a| in [2^-800, 2^800], q = RN(a y) is within 1 ulp of a/c, the remainder
+// a - c q is exact in one FMA, and RN(q + (a - c q) y) = RN(a/c) (Markstein's theorem: y within
+// half an ulp of 1/c, q within one ulp of a/c, no underflow or overflow on the way): the tape's
+// division bit for bit, with two FMAs and a multiplication instead of the divider.
+// |c| is kept to [2^-60, 2^60] so that the bounds on |a| leave every intermediate normal.
+double markstein_reciprocal(const Program& p, const Instr& in) {
+  if (in.op != Op::Div || in.b < p.n_inputs() || in.b >= p.first_temp()) return 0;
+  const double c = p.const_double[in.b - p.n_inputs()];
+  if (!std::isfinite(c) || std::fabs(c) < 0x1p-60 || std::fabs(c) > 0x1p60) return 0;
+  const double y = 1.0 / c;
+  // 1 - c y is exact in one FMA (|1 - c y| <= 2^-52 and it is a multiple of ulp(c) ulp(y))
+  return std::fabs(std::fma(-c, y, 1.0)) <= 0x1p-54 ? y : 0;
+}
+
 // void dc_kernel(const double* const* columns, double* out, i64 n), n a multiple of W:
 //   for (i = 0; i < n; i += W) out[i..i+W) = program(columns[0][i..i+W), ...)
 // The main loop takes kUnroll vectors per iteration and emits each tape instruction for all of
@@ -167,6 +182,23 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
     decl->setDoesNotAccessMemory();  // pure: no errno, no state
     return fc;
   };
+  // Lanes `bad` take the value of `fallback()`, which is emitted in a block of its own that
+  // runs only when some lane of the vector needs it (ordinary data never does).
+  auto patch = [&](Value* bad, Value* r, auto&& fallback) -> Value* {
+    BasicBlock* from = b.GetInsertBlock();
+    BasicBlock* fix = BasicBlock::Create(ctx, "fix", f, tail_head);
+    BasicBlock* cont = BasicBlock::Create(ctx, "cont", f, tail_head);
+    b.CreateCondBr(b.CreateOrReduce(bad), fix, cont);
+    b.SetInsertPoint(fix);
+    Value* l = b.CreateSelect(bad, fallback(), r);
+    BasicBlock* fixed = b.GetInsertBlock();
+    b.CreateBr(cont);
+    b.SetInsertPoint(cont);
+    PHINode* phi = b.CreatePHI(vec, 2);
+    phi->addIncoming(r, from);
+    phi->addIncoming(l, fixed);
+    return phi;
+  };
   // One tape instruction on one vector.
   auto apply = [&](const Instr& in, Value* a, Value* c) -> Value* {
     switch (in.op) {
@@ -179,23 +211,6 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
       case Op::Abs: return b.CreateUnaryIntrinsic(Intrinsic::fabs, a);
       default: break;
     }
-    // Lanes `bad` take the value of `fallback()`, which is emitted in a block of its own that
-    // runs only when some lane of the vector needs it (ordinary data never does).
-    auto patch = [&](Value* bad, Value* r, auto&& fallback) -> Value* {
-      BasicBlock* from = b.GetInsertBlock();
-      BasicBlock* fix = BasicBlock::Create(ctx, "fix", f, tail_head);
-      BasicBlock* cont = BasicBlock::Create(ctx, "cont", f, tail_head);
-      b.CreateCondBr(b.CreateOrReduce(bad), fix, cont);
-      b.SetInsertPoint(fix);
-      Value* l = b.CreateSelect(bad, fallback(), r);
-      BasicBlock* fixed = b.GetInsertBlock();
-      b.CreateBr(cont);
-      b.SetInsertPoint(cont);
-      PHINode* phi = b.CreatePHI(vec, 2);
-      phi->addIncoming(r, from);
-      phi->addIncoming(l, fixed);
-      return phi;
-    };
     const int k = sleef_index(in.op);
     auto call = [&](int fn) { return b.CreateCall(sleef(fn, 1), {a}); };
     if (isa.fma && (in.op == Op::Asin || in.op == Op::Acos)) return jitir::emit_arcsine(b, a, in.op == Op::Acos);
@@ -226,6 +241,23 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
       // every double 2^k): a multiplication instead of a division's latency
       if (const double r = power_of_two_reciprocal(p, in); r != 0) {
         for (unsigned v = 0; v < u; ++v) reg[v][in.dst] = b.CreateFMul(reg[v][in.a], splat(r));
+        continue;
+      }
+      if (const double y = isa.fma ? markstein_reciprocal(p, in) : 0; y != 0) {
+        const double c = p.const_double[in.b - p.n_inputs()];
+        for (unsigned v = 0; v < u; ++v) {
+          Value* a = reg[v][in.a];
+          Value* q = b.CreateFMul(a, splat(y));
+          Value* r = b.CreateIntrinsic(Intrinsic::fma, {vec}, {b.CreateFNeg(q), splat(c), a});
+          Value* q1 = b.CreateIntrinsic(Intrinsic::fma, {vec}, {r, splat(y), q});
+          // a = +-0: q is the zero of the right sign; |a| outside [2^-800, 2^800], inf, NaN:
+          // the division itself (a branch ordinary data does not take)
+          Value* mag = b.CreateUnaryIntrinsic(Intrinsic::fabs, a);
+          Value* zero = b.CreateFCmpOEQ(a, splat(0.0));
+          Value* in_range = b.CreateAnd(b.CreateFCmpOGE(mag, splat(0x1p-800)), b.CreateFCmpOLE(mag, splat(0x1p800)));
+          Value* res = b.CreateSelect(zero, q, q1);
+          reg[v][in.dst] = patch(b.CreateNot(b.CreateOr(zero, in_range)), res, [&] { return b.CreateFDiv(a, splat(c)); });
+        }
         continue;
       }
       for (unsigned v = 0; v < u; ++v)

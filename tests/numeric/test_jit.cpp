@@ -328,6 +328,43 @@ TEST_CASE("JIT: inline sin and cos below 0.9 ulp near multiples of pi/4, tiny, r
   }
 }
 
+TEST_CASE("JIT: a division by a constant is the tape's division, bit for bit, over the whole double range", "[numeric][jit]") {
+  // jit_llvm.cpp replaces x / c by a multiplication and two FMAs (Markstein's correction) when
+  // RN(1/c) is close enough to 1/c (3, 7, 10, 9.81, ... qualify; the others keep the division)
+  // and sends |x| outside [2^-800, 2^800], zeros, inf and NaN to the division itself.
+  if (!jit_enabled()) { WARN("no JIT in this build"); return; }
+  std::mt19937_64 rng(93);
+  std::vector<double> xs;
+  for (int i = 0; i < 20000; ++i) {  // random bit patterns: every exponent, every significand
+    std::uint64_t bits = rng();
+    double v;
+    std::memcpy(&v, &bits, sizeof v);
+    xs.push_back(v);
+  }
+  for (int i = 0; i < 20000; ++i) xs.push_back(std::ldexp(std::uniform_real_distribution<double>(1, 2)(rng), static_cast<int>(rng() % 1700) - 850));
+  for (int i = 0; i < 2000; ++i) xs.push_back(static_cast<double>(rng() % 100000));  // integers: exact quotients
+  for (double e : {0x1p-800, 0x1p800, 0x1.fffffffffffffp-801, 0x1.0000000000001p800, 0x1p-1074, 0x1p1023, 0.0, -0.0,
+                   std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(), std::nan("")})
+    xs.push_back(e), xs.push_back(-e);
+  const std::size_t n = xs.size();
+  const std::vector<std::vector<double>> cols = {xs, std::vector<double>(n, 0.0)};
+  for (double c : {3.0, -3.0, 7.0, 10.0, 9.81, 0.1, 1.5, 6.0, 1e-10, 12345.678, 1.0 / 3.0, 0x1.fffffffffffffp0, 1e300}) {
+    INFO("c = " << c);
+    const Program p = compile(x / GiNaC::numeric(exact_rational(c)), {x, y});
+    REQUIRE(p.count(Op::Div) == 1);
+    for (const char* isa : {"avx512f", "avx2"}) {
+      std::string why;
+      auto kern = JitKernel::compile(p, &why, isa);
+      if (!kern) continue;
+      INFO(isa);
+      const auto got = run(*kern, cols, n), want = tape(p, cols, n);
+      std::size_t diff = 0;
+      for (std::size_t i = 0; i < n; ++i) diff += !same_bits(got[i], want[i]);
+      REQUIRE(diff == 0);
+    }
+  }
+}
+
 TEST_CASE("JIT: one kernel called from two threads at once", "[numeric][jit]") {
   if (!jit_enabled()) { WARN("no JIT in this build"); return; }
   const Program p = compile(GiNaC::sin(x) * GiNaC::exp(y) + x / y, {x, y});
