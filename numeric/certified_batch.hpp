@@ -20,8 +20,9 @@
 //         where a kernel gives up (exp beyond 708, sin beyond 2^20, acos next to +-1, ...) the
 //         long double step takes the point (certified_steps.hpp: glibc's documented long double
 //         errors, 8 ulps charged; the rounding of V to long double is measured exactly);
-//   underflow: every operation adds 2^-1060 (far above the few roundings at 2^-1075 that a
-//         subnormal lo part can suffer); the bound's own arithmetic (round to nearest) is
+//   underflow: every operation adds 2^-1022 (far above the few roundings at 2^-1075 that a
+//         subnormal lo part can suffer, and a normal number: a subnormal one costs a
+//         microcode assist on Intel cores); the bound's own arithmetic (round to nearest) is
 //         covered by a factor 1 + 2^-40 per operation.
 // The loops over a block are branch-free (a point that gives up carries E = NaN) so that the
 // compiler vectorises them; the function is compiled for x86-64-v4 (AVX-512), v3 (AVX2 + FMA)

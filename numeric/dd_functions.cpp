@@ -44,7 +44,7 @@ DC_DD_INLINE constexpr double inv_fact(int n) { return kInvFact.v[n]; }
 //     t^k and the final product: 2m + 1 + m + k; all of it is below (2m + 2k + 4) u smax tau^k,
 //     where smax >= sum |c_i| tau^(i step) on the kernel's range (this needs m <= k + 3 for step 2);
 //   - the perturbation |x.l| + x.e of t, times the derivative of the tail, <= dmax tau^(k-1);
-//   - underflow of the products: 2m + 2k + 4 times 2^-1060.
+//   - underflow of the products: 2m + 2k + 4 times kEta (2^-1022, far above the 2^-1075 each).
 // tau >= |t| and >= |x's true value|; the caller checks that tau is within the kernel's range.
 template <int M>
 DC_DD_INLINE DE poly_tail(const double (&c)[M + 1], int step, int k, DDE x, double tau, double smax, double dmax) {

@@ -12,7 +12,10 @@
 //   div, sqrt: no a priori bound; the error is measured from the residual A - Q B (S^2 - A),
 //        itself computed with the two operations above;
 //   operand errors propagate as in interval arithmetic (|A| eb + |B| ea + ea eb, ...);
-//   every operation adds kEta (roundings of subnormal low parts), and the bound's own
+//   every operation adds kEta (roundings of subnormal low parts, each at most 2^-1075; kEta is
+//        the smallest normal double, far more than needed, because a subnormal operand in the
+//        bound's own additions costs a microcode assist per vector on Intel cores: with 2^-1060
+//        the certified batch of velocity_symbols ran 20 % slower there), and the bound's own
 //        arithmetic (round to nearest) is covered by the factor kSafe per operation.
 // A DE is a plain double with a bound on its error: a polynomial tail small enough for double's
 // precision, bounded a priori by its caller (dd_functions.cpp, poly_tail), then added into a DDE.
@@ -34,7 +37,7 @@ namespace dc::num::dde {
 inline constexpr double kU = 0x1p-53;        // unit roundoff of double
 inline constexpr double kAdd = 0x1p-103;     // 8u^2: a double-double sum, relative to |h| (cited 3u^2)
 inline constexpr double kMul = 0x1p-102;     // 16u^2: a double-double product (cited 7u^2)
-inline constexpr double kEta = 0x1p-1060;    // per operation: roundings of subnormal low parts
+inline constexpr double kEta = 0x1p-1022;    // per operation: roundings of subnormal low parts (normal: no assists)
 inline constexpr double kSafe = 1 + 0x1p-40; // the bound's own roundings (a few dozen, each <= 2^-53)
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 inline constexpr double kTiny = 0x1p-960;    // above it a product's rounding error is a double
