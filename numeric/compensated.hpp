@@ -30,6 +30,7 @@
 
 #include <Eigen/Core>
 
+#include "numeric/double_double.hpp"
 #include "numeric/evaluator.hpp"
 
 namespace dc::num {
@@ -40,18 +41,20 @@ struct DD {
 
 namespace dd {
 
+// the error-free transformations of numeric/double_double.hpp, as DD values
 inline DD quick_two_sum(double a, double b) {
-  const double s = a + b;
-  return {s, b - (s - a)};
+  DD r;
+  dde::fast_two_sum(a, b, r.hi, r.lo);
+  return r;
 }
 inline DD two_sum(double a, double b) {
-  const double s = a + b;
-  const double bb = s - a;
-  return {s, (a - (s - bb)) + (b - bb)};
+  DD r;
+  dde::two_sum(a, b, r.hi, r.lo);
+  return r;
 }
 inline DD two_prod(double a, double b) {
   const double p = a * b;
-  return {p, std::fma(a, b, -p)};
+  return {p, std::fma(a, b, -p)};   // exact residual (as dde::prod, without its bound)
 }
 inline DD finite_or(const DD& r, double raw) {
   // an overflowed (or NaN) partial result: report it as double evaluation would
