@@ -1,22 +1,20 @@
 #!/usr/bin/env python3
-"""Coefficients of the JIT's inline functions (numeric/jit_module/jit_arcsine.cpp, jit_sincos.cpp).
+"""Coefficients of the JIT's inline functions (numeric/jit_module/jit_arcsine.cpp).
 
 Each polynomial P is fitted by Remez exchange (mpmath, 60 digits) to minimise the error it leaves
 in the function, max |w(z) (P_true(z) - P(z))| on [0, b], where z is the squared argument:
   asin:  asin(s) = s + s z P(z),            z = s^2 in [0, 1/4],      w = z
-  sin:   sin(r)  = r + r z P(z),            z = r^2 in [0, 0.79^2],  w = z
-  cos:   cos(r)  = 1 - z/2 + z^2 P(z),      z = r^2 in [0, 0.79^2],  w = z^2 / cos(0.79)
-(the sin and cos range is |r| <= pi/4 with room for a quadrant rounded the other way). Prints
+(an inline sin and cos, fitted here too, were measured slower than SLEEF's and removed; the
+table takes more targets of this form). Prints
 the coefficients as doubles and the error after rounding them to doubles (measured on 10 001
 points), which enters the error bounds in the .cpp files.
-Run: python3 tools/fit_jit_polynomials.py [asin|sin|cos]   (a minute or two each)
+Run: python3 tools/fit_jit_polynomials.py [asin]   (about ten seconds)
 """
 import sys
 
 import mpmath as mp
 
 mp.mp.dps = 60
-R2 = mp.mpf("0.79") ** 2
 
 
 def asin_p(z):
@@ -26,23 +24,8 @@ def asin_p(z):
     return (mp.asin(s) / s - 1) / z
 
 
-def sin_p(z):
-    if z == 0:
-        return -mp.mpf(1) / 6
-    r = mp.sqrt(z)
-    return (mp.sin(r) / r - 1) / z
-
-
-def cos_p(z):
-    if z == 0:
-        return mp.mpf(1) / 24
-    return (mp.cos(mp.sqrt(z)) - 1 + z / 2) / z**2
-
-
 TARGETS = {
     "asin": (asin_p, mp.mpf("0.25"), 12, lambda z: z),
-    "sin": (sin_p, R2, 7, lambda z: z),
-    "cos": (cos_p, R2, 7, lambda z: z**2 / mp.cos(mp.mpf("0.79"))),
 }
 
 

@@ -103,7 +103,7 @@ def main():
     p(f"Method: each formula loaded by label from its derivation file; {n} seeded random points from the"
       " declared domains, the same points for all three tools, single-threaded. derivcheck is its default"
       " batch path (`Evaluator<double>::eval_batch`: "
-      + (f"the JIT, {isa} vectors, asin/acos/sin/cos inline and SLEEF for the other transcendental functions" if isa else "the tape interpreter") +
+      + (f"the JIT, {isa} vectors, asin/acos inline and SLEEF for the other transcendental functions" if isa else "the tape interpreter") +
       "), served by `derivcheck chart evalpoints --serve`, which times one evaluation of all points per"
       " request; NumPy is timed in the Python process between requests; hand-written C++ is"
       " `hand_written_batch` in numeric/chart_data.cpp (same compiler flags as derivcheck). The"
@@ -151,12 +151,12 @@ def main():
     p("Reading the numbers: the JIT turns the formula's tape into one loop over <W x double> vectors"
       " (numeric/jit.hpp), so the rational formulas run at the speed of straight-line SIMD code, where"
       " the hand-written loop (compiled for baseline x86-64, SSE2) is limited to 2-wide vectors; on the"
-      " transcendental formulas the JIT's own inline acos and sin (numeric/jit_module/jit_arcsine.cpp,"
-      " jit_sincos.cpp: polynomials with FMA-split leading terms, bound 0.9 ulp) replace scalar libm calls."
-      " `wall_impulse` is the closest to the 2x target: its kernel is compute-bound (the inline sin and"
-      " a square root), and after NumPy's turn the 200 000 points come from memory again, which cost"
-      " about 1.5 ns per evaluation on the Intel host of 2026-11-26 (the server alone: 3.2 ns; after"
-      " 32 MB of other traffic: 4.8 ns). The ulps columns are"
+      " transcendental formulas SLEEF's vector sin and the JIT's own inline acos (numeric/jit_module/"
+      "jit_arcsine.cpp: no division and no square root instruction, bound 0.9 ulp) replace scalar libm"
+      " calls. `deflection` and `wall_impulse` are the closest to the 2x target: their kernels are"
+      " compute-bound (the acos polynomial and a division; SLEEF's sin and a square root), and after"
+      " NumPy's turn the 200 000 points come from memory again, which cost about 1.5 ns per evaluation"
+      " on the Intel host of 2026-11-26 (docs/performance.md, \"The JIT\"). The ulps columns are"
       " dominated by ill-conditioned points (cancellation in the formula, not the evaluator): both"
       " tools evaluate the same expression. The machine is shared by other jobs; interleaving the"
       " repeats keeps the three tools under the same load, but medians still move between runs.")

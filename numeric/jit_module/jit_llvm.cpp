@@ -1,7 +1,7 @@
 // The JIT module libderivcheck_jit.so (numeric/jit.hpp, numeric/jit_internal.hpp): a Program
 // as LLVM IR on <W x double>, compiled by LLVM 14 ORC (LLJIT) for the host CPU, transcendental
-// functions as calls to SLEEF (asin, acos, sin and cos inline where the instruction set has FMA:
-// jit_arcsine.hpp, jit_sincos.hpp). One LLJIT per kernel: the kernel owns its code and frees it with
+// functions as calls to SLEEF (asin and acos inline where the instruction set has FMA:
+// jit_arcsine.hpp). One LLJIT per kernel: the kernel owns its code and frees it with
 // itself, and kernels compiled on different threads share nothing.
 #include <array>
 #include <cmath>
@@ -25,7 +25,6 @@
 
 #include "numeric/jit_internal.hpp"
 #include "numeric/jit_module/jit_arcsine.hpp"
-#include "numeric/jit_module/jit_sincos.hpp"
 
 // SLEEF 3.5.1 (libsleef3), one symbol per function and instruction set; the names are checked
 // against `nm -D libsleef.so`. u10: max error 1.0 ulp; u05: 0.5001 ulp (SLEEF's documentation;
@@ -214,11 +213,6 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
     const int k = sleef_index(in.op);
     auto call = [&](int fn) { return b.CreateCall(sleef(fn, 1), {a}); };
     if (isa.fma && (in.op == Op::Asin || in.op == Op::Acos)) return jitir::emit_arcsine(b, a, in.op == Op::Acos);
-    if (isa.fma && (in.op == Op::Sin || in.op == Op::Cos)) {
-      // inline up to |x| = 2^19 (jit_sincos.hpp), SLEEF beyond and for inf and NaN
-      const jitir::InlineResult r = jitir::emit_sincos(b, a, in.op == Op::Cos);
-      return patch(r.outside, r.value, [&] { return call(k); });
-    }
     Value* r = arity(in.op) == 2 ? b.CreateCall(sleef(k, 2), {a, c}) : call(k);
     // SLEEF 3.5's log1p overflows to inf for x above about 1e307; there 1 + x == x and log(x)
     // is log1p(x) to within 1e-300 relative. Lanes above 1e300 take log(x).
