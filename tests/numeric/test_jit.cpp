@@ -224,6 +224,41 @@ TEST_CASE("JIT: handout formulas at lengths around the width, on every instructi
   }
 }
 
+namespace {
+// Each function of x at `pts` (and at -pts) against CLN at 25 digits, with AVX-512 and AVX2
+// where the host has them: every error at most `bound` ulps (below it when `strict`).
+void within_ulps_on_both_isas(std::vector<double> pts, const std::vector<ex>& fns, double bound, bool strict) {
+  const std::size_t half = pts.size();
+  for (std::size_t i = 0; i < half; ++i) pts.push_back(-pts[i]);
+  const std::size_t n = pts.size();
+  const std::vector<std::vector<double>> cols = {pts, std::vector<double>(n, 0.0)};
+  for (const ex& f : fns) {
+    INFO(f);
+    const Program p = compile(f, {x, y});
+    std::vector<GiNaC::numeric> ref(n);
+    for (std::size_t i = 0; i < n; ++i) ref[i] = reference_value(f, {{x, exact_rational(pts[i])}}, 25);
+    for (const char* isa : {"avx512f", "avx2"}) {
+      std::string why;
+      auto kern = JitKernel::compile(p, &why, isa);
+      if (!kern) {
+        WARN(isa << " not tested here: " << why);
+        continue;
+      }
+      INFO(isa);
+      const auto got = run(*kern, cols, n);
+      double worst = 0;
+      for (std::size_t i = 0; i < n; ++i) {
+        INFO("x = " << std::hexfloat << pts[i] << ": " << got[i] << std::defaultfloat);
+        const double e = error_in_ulps(got[i], ref[i]);
+        worst = std::max(worst, e);
+        REQUIRE((strict ? e < bound : e <= bound));
+      }
+      WARN(f << ", " << isa << ": max error " << worst << " ulp on " << n << " points");
+    }
+  }
+}
+}  // namespace
+
 TEST_CASE("JIT: inline asin and acos below 0.9 ulp near 1/2, near 1, tiny and random, with AVX-512 and AVX2", "[numeric][jit]") {
   // numeric/jit_module/jit_arcsine.cpp derives 0.9 ulp; SLEEF's bound, which it replaces, is
   // 1 ulp. The points where its two ranges meet (|x| = 1/2), where the square root goes to 0
@@ -238,42 +273,14 @@ TEST_CASE("JIT: inline asin and acos below 0.9 ulp near 1/2, near 1, tiny and ra
   for (int j = 1; j <= 53; ++j) pts.push_back(1 - std::ldexp(1.0, -j)), pts.push_back(std::ldexp(1.0, -j));
   for (int i = 0; i < 400; ++i) pts.push_back(logu(rng, -320, -1, false));
   for (int i = 0; i < 3000; ++i) pts.push_back(std::uniform_real_distribution<double>(0, 1)(rng));
-  const std::size_t half = pts.size();
-  for (std::size_t i = 0; i < half; ++i) pts.push_back(-pts[i]);
-  const std::size_t n = pts.size();
-  const std::vector<std::vector<double>> cols = {pts, std::vector<double>(n, 0.0)};
-  for (const bool acos : {false, true}) {
-    const ex f = acos ? GiNaC::acos(x) : GiNaC::asin(x);
-    INFO(f);
-    const Program p = compile(f, {x, y});
-    std::vector<GiNaC::numeric> ref(n);
-    for (std::size_t i = 0; i < n; ++i) ref[i] = reference_value(f, {{x, exact_rational(pts[i])}}, 25);
-    for (const char* isa : {"avx512f", "avx2"}) {
-      std::string why;
-      auto kern = JitKernel::compile(p, &why, isa);
-      if (!kern) {
-        WARN(isa << " not tested here: " << why);
-        continue;
-      }
-      INFO(isa);
-      const auto got = run(*kern, cols, n);
-      double worst = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        INFO("x = " << std::hexfloat << pts[i] << ": " << got[i] << std::defaultfloat);
-        const double e = error_in_ulps(got[i], ref[i]);
-        worst = std::max(worst, e);
-        REQUIRE(e < 0.9);
-      }
-      WARN((acos ? "acos" : "asin") << " inline, " << isa << ": max error " << worst << " ulp on " << n << " points");
-    }
-  }
+  within_ulps_on_both_isas(pts, {GiNaC::asin(x), GiNaC::acos(x)}, 0.9, true);
 }
 
-TEST_CASE("JIT: sin and cos within 1 ulp near multiples of pi/4, tiny, random and up to 2^19, with AVX-512 and AVX2", "[numeric][jit]") {
+TEST_CASE("JIT: sin and cos within 1 ulp near multiples of pi/4 and k pi/2, tiny and random up to 1e6, with AVX-512 and AVX2", "[numeric][jit]") {
   // SLEEF's sin and cos (1 ulp documented) at the points where an argument reduction is
   // hardest. Points: next to k pi/4 (where the reduced argument is smallest or the quadrant changes),
   // the double nearest to k pi/2 for large k (the reduction's hardest cancellation), tiny and
-  // subnormal x, log-uniform up to 2^19 and a little beyond.
+  // subnormal x, log-uniform up to 10^6.
   if (!jit_enabled()) { WARN("no JIT in this build"); return; }
   std::mt19937_64 rng(92);
   std::vector<double> pts;
@@ -288,35 +295,7 @@ TEST_CASE("JIT: sin and cos within 1 ulp near multiples of pi/4, tiny, random an
   for (int i = 0; i < 2500; ++i) pts.push_back(logu(rng, -3, 5.72, false));
   for (int i = 0; i < 100; ++i) pts.push_back(logu(rng, 5.72, 6, false));
   pts.push_back(0x1p19), pts.push_back(std::nextafter(0x1p19, 1e9));
-  const std::size_t half = pts.size();
-  for (std::size_t i = 0; i < half; ++i) pts.push_back(-pts[i]);
-  const std::size_t n = pts.size();
-  const std::vector<std::vector<double>> cols = {pts, std::vector<double>(n, 0.0)};
-  for (const bool cos : {false, true}) {
-    const ex f = cos ? GiNaC::cos(x) : GiNaC::sin(x);
-    INFO(f);
-    const Program p = compile(f, {x, y});
-    std::vector<GiNaC::numeric> ref(n);
-    for (std::size_t i = 0; i < n; ++i) ref[i] = reference_value(f, {{x, exact_rational(pts[i])}}, 25);
-    for (const char* isa : {"avx512f", "avx2"}) {
-      std::string why;
-      auto kern = JitKernel::compile(p, &why, isa);
-      if (!kern) {
-        WARN(isa << " not tested here: " << why);
-        continue;
-      }
-      INFO(isa);
-      const auto got = run(*kern, cols, n);
-      double worst = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        INFO("x = " << std::hexfloat << pts[i] << ": " << got[i] << std::defaultfloat);
-        const double e = error_in_ulps(got[i], ref[i]);
-        worst = std::max(worst, e);
-        REQUIRE(e <= 1.0);
-      }
-      WARN((cos ? "cos" : "sin") << ", " << isa << ": max error " << worst << " ulp on " << n << " points");
-    }
-  }
+  within_ulps_on_both_isas(pts, {GiNaC::sin(x), GiNaC::cos(x)}, 1.0, false);
   // signed zero, inf, NaN and a huge argument
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<std::vector<double>> sv = {{-0.0, 0.0, inf, -inf, std::nan(""), 1e300}, std::vector<double>(6, 0.0)};
