@@ -79,9 +79,6 @@ llvm::Value* emit_arcsine(llvm::IRBuilder<>& b, llvm::Value* x, bool acos) {
   // sqrt z = su + cu without a division or a square root instruction (the divider is what the
   // rest of a formula waits on): y ~ 1/sqrt(z) from the hardware estimate and one Newton step,
   // su = z y refined by one Newton step, cu from the remainder z - su^2 (one FMA) times y/2
-  // sqrt z = su + cu without a division or a square root instruction (the divider is what the
-  // rest of a formula waits on): y ~ 1/sqrt(z) from the hardware estimate and one Newton step,
-  // su = z y refined by one Newton step, cu from the remainder z - su^2 (one FMA) times y/2
   Value* y = rsqrt_estimate(b, zu);
   y = b.CreateFMul(y, fma(b.CreateFMul(zu, splat(-0.5)), b.CreateFMul(y, y), splat(1.5)));
   // z = 0 (|x| = 1): the estimate is inf and y NaN; y = 0 gives su = cu = 0. z < 0 or NaN

@@ -1,6 +1,6 @@
 // asin and acos emitted inline into a JIT kernel (numeric/jit_module/jit_llvm.cpp), in place of
-// a call to SLEEF: the same 1-ulp guarantee with about half the work, and the instructions
-// interleave with the rest of the formula. Needs fused multiply-add (the sqrt residual is
+// a call to SLEEF: a 0.9-ulp bound (SLEEF's is 1 ulp), no use of the divider, which the
+// formula's own divisions need, and instructions that interleave with the rest of the formula. Needs fused multiply-add (the sqrt residual is
 // computed exactly with it); without FMA the kernel keeps calling SLEEF.
 #pragma once
 

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <mutex>
 #include <string>
 
@@ -103,10 +104,17 @@ int sleef_index(Op op) {
   }
 }
 
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The divisor of a division by a constant, else NaN.
+double constant_divisor(const Program& p, const Instr& in) {
+  if (in.op != Op::Div || in.b < p.n_inputs() || in.b >= p.first_temp()) return kNaN;
+  return p.const_double[in.b - p.n_inputs()];
+}
+
 // For a division by a constant +-2^k: 2^-k (exact), else 0.
 double power_of_two_reciprocal(const Program& p, const Instr& in) {
-  if (in.op != Op::Div || in.b < p.n_inputs() || in.b >= p.first_temp()) return 0;
-  const double c = p.const_double[in.b - p.n_inputs()];
+  const double c = constant_divisor(p, in);
   int e = 0;
   if (!std::isfinite(c) || c == 0 || std::fabs(std::frexp(c, &e)) != 0.5) return 0;
   const double r = 1.0 / c;   // 2^(1 - e): exact when it is a double (normal or subnormal)
@@ -120,8 +128,7 @@ double power_of_two_reciprocal(const Program& p, const Instr& in) {
 // division bit for bit, with two FMAs and a multiplication instead of the divider.
 // |c| is kept to [2^-60, 2^60] so that the bounds on |a| leave every intermediate normal.
 double markstein_reciprocal(const Program& p, const Instr& in) {
-  if (in.op != Op::Div || in.b < p.n_inputs() || in.b >= p.first_temp()) return 0;
-  const double c = p.const_double[in.b - p.n_inputs()];
+  const double c = constant_divisor(p, in);
   if (!std::isfinite(c) || std::fabs(c) < 0x1p-60 || std::fabs(c) > 0x1p60) return 0;
   const double y = 1.0 / c;
   // 1 - c y is exact in one FMA (|1 - c y| <= 2^-52 and it is a multiple of ulp(c) ulp(y))
@@ -238,7 +245,7 @@ std::unique_ptr<llvm::Module> emit(const Program& p, const IsaSpec& isa,
         continue;
       }
       if (const double y = isa.fma ? markstein_reciprocal(p, in) : 0; y != 0) {
-        const double c = p.const_double[in.b - p.n_inputs()];
+        const double c = constant_divisor(p, in);
         for (unsigned v = 0; v < u; ++v) {
           Value* a = reg[v][in.a];
           Value* q = b.CreateFMul(a, splat(y));
