@@ -33,7 +33,7 @@ exec::RunOptions BudgetFlags::resolve() const {
 #include <sstream>
 
 #include "apps/commands.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/source.hpp"
 #include "derivations/exec/pool.hpp"
 
 namespace dc::cli {
@@ -59,7 +59,7 @@ int run_supervised(const exec::RunOptions& run, const std::function<int(std::ost
     }
     return std::string(1, static_cast<char>(code)) + out.str() + std::string(1, '\0') + err;
   });
-  exec::Outcome o = pool.run_one("");
+  exec::TaskOutcome o = pool.run_one("");
   if (!o.done()) return on_budget(o.reason);
   std::size_t nul = o.payload.find('\0', 1);
   std::cout << o.payload.substr(1, nul - 1);

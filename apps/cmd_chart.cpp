@@ -1,6 +1,6 @@
 // `derivcheck chart KIND`: work-precision data and stability maps as CSV, PNG, SVG and pgfplots
-// (docs/charts.md). All measuring lives in numeric/chart_data.cpp, all drawing in
-// numeric/chart_plot.cpp; this file parses options, picks files and names.
+// (docs/charts.md). All measuring lives in numeric/charts/chart_data.cpp, all drawing in
+// numeric/charts/chart_plot.cpp; this file parses options, picks files and names.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -16,12 +16,12 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/commands.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/io.hpp"
-#include "numeric/chart_checker.hpp"
-#include "numeric/chart_data.hpp"
-#include "numeric/chart_ode_maps.hpp"
-#include "numeric/chart_plot.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/io.hpp"
+#include "numeric/charts/chart_checker.hpp"
+#include "numeric/charts/chart_data.hpp"
+#include "numeric/charts/chart_ode_maps.hpp"
+#include "numeric/charts/chart_plot.hpp"
 #include "numeric/evaluator.hpp"
 
 namespace {

@@ -5,8 +5,8 @@
 
 #include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/report.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/report/report.hpp"
 
 namespace dc::cli {
 namespace {

@@ -11,8 +11,8 @@
 #include "apps/commands.hpp"
 #include "derivations/exec/pool.hpp"
 #include "derivations/exec/wire.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/derivation.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/crosscheck.hpp"
 
 namespace dc::cli {
@@ -50,7 +50,7 @@ std::string encode(const std::vector<num::FormulaReport>& reports) {
 }
 
 std::vector<num::FormulaReport> decode(const std::string& bytes) {
-  exec::Reader rd(bytes);
+  exec::WireReader rd(bytes);
   std::vector<num::FormulaReport> out(rd.u64());
   for (auto& r : out) {
     for (auto* s : {&r.file, &r.label, &r.target, &r.stable_label, &r.stable_regime, &r.stable_of, &r.skipped}) *s = rd.str();
@@ -105,7 +105,7 @@ int run(CrossOptions& o) {
     if (next >= tasks.size()) return false;
     task = std::to_string(next++);
     return true;
-  }, [&](exec::Outcome&& out) {
+  }, [&](exec::TaskOutcome&& out) {
     const Task& t = tasks[done++];
     if (out.done()) {
       for (auto& r : decode(out.payload)) all.push_back(std::move(r));

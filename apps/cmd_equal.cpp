@@ -3,9 +3,9 @@
 
 #include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
-#include "derivations/core/claims.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/report.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/report/report.hpp"
 
 namespace dc::cli {
 namespace {
@@ -29,15 +29,6 @@ void print(const Verdict& v, bool json, std::ostream& out) {
   }
 }
 
-int exit_code(const Verdict& v) {
-  switch (v.kind) {
-    case VerdictKind::Proved:
-    case VerdictKind::HoldsNumerically: return kExitOk;
-    case VerdictKind::Refuted: return kExitRefuted;
-    case VerdictKind::Undecided: return kExitUndecided;
-  }
-  return kExitInternal;
-}
 
 int run(const EqualOptions& o) {
   // Parsing, the cascade and the probe all run in a worker under the budget.
@@ -46,14 +37,14 @@ int run(const EqualOptions& o) {
       [&o](std::ostream& out) {
         Verdict v = check_equal(o.lhs, o.rhs, o.assume);
         print(v, o.json, out);
-        return exit_code(v);
+        return exit_code_of(v.kind);
       },
       [&o](const std::string& reason) {
         Verdict v;
         v.method = "budget";
         v.reason = reason;
         print(v, o.json, std::cout);
-        return exit_code(v);
+        return exit_code_of(v.kind);
       });
 }
 

@@ -1,8 +1,8 @@
 // derivcheck eval FILE LABEL (--at NAME=VALUE,... | --points IN.csv [-o OUT.csv])
 //                 [--method auto|double|long-double|compensated|stable|reference] [--digits N]
 //
-// reference: the value with N certified significant digits (Arb; numeric/bind.cpp).
-// The double methods (numeric/certified.hpp) print the double in round-trip form, then the
+// reference: the value with N certified significant digits (Arb; numeric/reference/bind.cpp).
+// The double methods (numeric/certified/certified.hpp) print the double in round-trip form, then the
 // method and a certified bound on its error:
 //     -1.2857142857142858
 //     method: auto (correctly rounded: Arb enclosure at 96 bits)
@@ -19,12 +19,12 @@
 
 #include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/io.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/io.hpp"
 #include "derivations/exec/pool.hpp"
-#include "numeric/certified.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/certified/certified.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 namespace dc::cli {
 namespace {
@@ -171,7 +171,7 @@ int run_points(const EvalOptions& o) {
           next = last;
           return true;
         },
-        [&](exec::Outcome&& r) {
+        [&](exec::TaskOutcome&& r) {
           std::size_t row = sent[back++];
           if (!r.done()) return;   // over its budget: every row of the chunk gets its own task
           std::size_t from = 0;
@@ -193,7 +193,7 @@ int run_points(const EvalOptions& o) {
         task = "row " + std::to_string(next++);
         return true;
       },
-      [&](exec::Outcome&& r) {
+      [&](exec::TaskOutcome&& r) {
         payload[sent[back++]] = r.done() ? r.payload : ",,," + csv_field("undecided: " + r.reason);
       });
   std::string out;

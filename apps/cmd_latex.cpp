@@ -7,10 +7,10 @@
 
 #include "apps/budget_flags.hpp"
 #include "apps/commands.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/latex.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/report/latex.hpp"
+#include "derivations/rules/check.hpp"
 #include "derivations/exec/batch.hpp"
 
 namespace dc::cli {

@@ -11,9 +11,9 @@
 #include <sstream>
 
 #include "apps/commands.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace fs = std::filesystem;
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "apps/commands.hpp"
-#include "derivations/core/io.hpp"
+#include "derivations/syntax/io.hpp"
 #include "numeric/scenes/spec.hpp"
 
 namespace dc::cli {

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "derivations/symbolic/verdict.hpp"
+
 namespace dc::cli {
 
 // setup adds the subcommand's options to `sub` and returns the function that runs it
@@ -28,11 +30,11 @@ struct CommandRegistrar {
   }
 };
 
-// Exit codes (stable; documented in docs/cli.md)
-constexpr int kExitOk = 0;
-constexpr int kExitRefuted = 1;
-constexpr int kExitInputError = 2;
-constexpr int kExitUndecided = 3;
-constexpr int kExitInternal = 4;
+// Exit codes: defined once, with the verdicts (derivations/symbolic/verdict.hpp).
+using dc::kExitOk;
+using dc::kExitRefuted;
+using dc::kExitInputError;
+using dc::kExitUndecided;
+using dc::kExitInternal;
 
 }  // namespace dc::cli

@@ -6,7 +6,8 @@
 #include <stdexcept>
 
 #include "apps/commands.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/source.hpp"
+#include "derivations/calculus/install.hpp"
 
 namespace dc::cli {
 std::vector<Command>& registry() {
@@ -72,6 +73,7 @@ std::vector<std::string> positional_minus(CLI::App& app, int argc, char** argv) 
 }  // namespace dc::cli
 
 int main(int argc, char** argv) {
+  dc::calculus::install();
   using namespace dc::cli;
   CLI::App app{"derivcheck: checks physics derivations step by step (symbolic, numeric, LaTeX)", "derivcheck"};
   app.set_version_flag("--version", std::string("derivcheck ") + DERIVCHECK_VERSION);

@@ -1,7 +1,7 @@
 // The certified automatic mode's fast stages against plain double, on the handout formulas that
 // bench/peers times: per point, the long double tape with a running error bound
-// (numeric/certified_fast.hpp) against the double tape; over a batch, the double-double stage
-// with its long double fallback (numeric/certified_batch.hpp) against the double tape's batch
+// (numeric/certified/certified_fast.hpp) against the double tape; over a batch, the double-double stage
+// with its long double fallback (numeric/certified/certified_batch.hpp) against the double tape's batch
 // and the JIT (the default fast path). Points: seeded, uniform in [0.5, 5] for every parameter (e in
 // [0.05, 0.95]), kept where the double tape gives a finite value. The counter `escalated` is the
 // fraction of points where the fast stages cannot decide the rounding and the Arb enclosure would
@@ -12,9 +12,9 @@
 #include <cmath>
 #include <random>
 
-#include "derivations/core/derivation.hpp"
-#include "numeric/certified_batch.hpp"
-#include "numeric/certified_fast.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "numeric/certified/certified_batch.hpp"
+#include "numeric/certified/certified_fast.hpp"
 #include "numeric/evaluator.hpp"
 
 namespace {

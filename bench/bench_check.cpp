@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

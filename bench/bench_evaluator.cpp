@@ -10,8 +10,8 @@
 #include <cmath>
 #include <random>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/prove.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/decide/prove.hpp"
 #include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/jit.hpp"

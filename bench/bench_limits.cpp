@@ -19,7 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
+#include "derivations/claims/claims.hpp"
 
 namespace {
 

@@ -7,9 +7,9 @@
 
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/source.hpp"
-#include "derivations/core/symbols.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/source.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "derivations/core/limit.hpp"
-#include "derivations/core/prove.hpp"
+#include "derivations/calculus/limit_entry.hpp"
+#include "derivations/decide/prove.hpp"
 
 using namespace dc;
 using GiNaC::ex;

@@ -42,9 +42,12 @@ endif()
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/derivations/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/derivcheck/derivations
         FILES_MATCHING PATTERN "*.hpp"
         PATTERN "include" EXCLUDE      # derivations/catch/include: <derivcheck/catch2.hpp>, below
+        PATTERN "internal" EXCLUDE     # headers private to a stage folder
         PATTERN "handout9" EXCLUDE)    # derivation files, no headers
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/numeric/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/derivcheck/numeric
-        FILES_MATCHING PATTERN "*.hpp")
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "internal" EXCLUDE)
+# The include paths of the layout before the stage folders, as forwarders (install tree only).
+include(${PROJECT_SOURCE_DIR}/cmake/DerivcheckCompatHeaders.cmake)
 install(FILES ${PROJECT_SOURCE_DIR}/derivations/catch/include/derivcheck/catch2.hpp
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/derivcheck)
 

@@ -1,6 +1,7 @@
 #include "numeric/crosscheck.hpp"
 
 #include "derivations/kernel/ball.hpp"
+#include "derivations/kernel/sample.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -11,9 +12,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "derivations/core/prove.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "derivations/decide/prove.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 namespace dc::num {
 namespace {
@@ -101,7 +102,7 @@ class Checker {
       free_symbol_names(c.lhs.subs(p), rest);
       free_symbol_names(c.rhs.subs(p), rest);
       if (!rest.empty()) continue;
-      if (!c.holds_at(p)) return std::nullopt;
+      if (!kernel::holds_at(c, p)) return std::nullopt;
     }
     return p;
   }

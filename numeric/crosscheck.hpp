@@ -14,7 +14,7 @@
 
 #include <ginac/ginac.h>
 
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
 #include "numeric/formula_evaluator.hpp"

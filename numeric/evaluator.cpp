@@ -7,8 +7,8 @@
 #include <sstream>
 #include <tuple>
 
-#include "derivations/core/prove.hpp"
-#include "numeric/exact.hpp"
+#include "derivations/decide/prove.hpp"
+#include "numeric/reference/exact.hpp"
 
 namespace dc::num {
 

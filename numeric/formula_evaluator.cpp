@@ -3,12 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "derivations/core/prove.hpp"
-#include "numeric/exact.hpp"
+#include "derivations/decide/prove.hpp"
+#include "numeric/reference/exact.hpp"
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/source.hpp"
-#include "derivations/core/symbols.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/source.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 namespace dc::num {
 namespace {

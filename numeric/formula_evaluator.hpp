@@ -15,7 +15,7 @@
 
 #include <Eigen/Core>
 
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/compensated.hpp"
 #include "numeric/evaluator.hpp"
 

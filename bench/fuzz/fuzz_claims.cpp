@@ -3,8 +3,8 @@
 // is the slow harness: the probe runs with fewer points at lower precision (ProveOptions below);
 // it is still the same code path. Every result must serialise as JSON text.
 #include "bench/fuzz/fuzz_common.hpp"
-#include "derivations/core/claims.hpp"
-#include "derivations/core/io.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/syntax/io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 2048) return 0;

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/source.hpp"
 
 namespace dc_fuzz {
 

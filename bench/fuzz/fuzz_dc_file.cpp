@@ -6,7 +6,7 @@
 #include <exception>
 
 #include "bench/fuzz/fuzz_common.hpp"
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 16384) return 0;  // longer inputs only slow the search; the limits have unit tests

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "bench/fuzz/fuzz_common.hpp"
-#include "derivations/core/claims.hpp"
-#include "derivations/core/expr.hpp"
-#include "derivations/core/symbols.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 4096) return 0;

@@ -3,7 +3,7 @@
 // InputError; the tree prints (to_text) and the printed form parses again to the same text.
 // fuzz_expr continues into the GiNaC conversion (diff, limit, ... carried out).
 #include "bench/fuzz/fuzz_common.hpp"
-#include "derivations/core/expr.hpp"
+#include "derivations/syntax/expr.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 4096) return 0;

@@ -8,8 +8,8 @@
 // fuzz_dc_file continues into the GiNaC conversion
 // (about 10 inputs per second instead of thousands).
 #include "bench/fuzz/fuzz_common.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/latex.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/latex.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 16384) return 0;

@@ -106,7 +106,7 @@ def main():
       + (f"the JIT, {isa} vectors, asin/acos inline and SLEEF for the other transcendental functions" if isa else "the tape interpreter") +
       "), served by `derivcheck chart evalpoints --serve`, which times one evaluation of all points per"
       " request; NumPy is timed in the Python process between requests; hand-written C++ is"
-      " `hand_written_batch` in numeric/chart_data.cpp (same compiler flags as derivcheck). The"
+      " `hand_written_batch` in numeric/charts/chart_data.cpp (same compiler flags as derivcheck). The"
       f" {reps} repeats are interleaved (derivcheck, NumPy, hand-written, derivcheck, ...); the table"
       " shows medians, min–max in brackets. Only the evaluation is timed (not process start, loading or"
       " the JIT compilation, shown separately). Errors in ulps of double against a 50-digit mpmath"

@@ -34,12 +34,13 @@
 #include <catch2/catch.hpp>
 #include <ginac/ginac.h>
 
-#include "derivations/core/claims.hpp"
-#include "derivations/core/expr.hpp"
-#include "derivations/core/printer.hpp"
-#include "derivations/core/prove.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/verdict.hpp"
+#include "derivations/calculus/install.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/symbolic/verdict.hpp"
 
 namespace Catch {
 template <>
@@ -123,7 +124,7 @@ inline std::string verdict_description(const Verdict& v) {
 }
 
 // What a match leaves for the description.
-struct Outcome {
+struct MatchOutcome {
   Verdict verdict;
   std::string rhs_text;  // the right side as printed (deterministic)
   std::string error;     // input error (malformed assumption or expression, clashing names)
@@ -138,7 +139,8 @@ struct Side {
 
 // Both sides in one symbol table (names matched), then prove_equal: the one decision all
 // overloads share. Input errors end up in out.error, never as an exception.
-inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, Outcome& out) {
+inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, MatchOutcome& out) {
+  calculus::install();
   try {
     std::map<std::string, GiNaC::ex> syms;
     for (const Side* s : {&lhs, &rhs})
@@ -234,14 +236,14 @@ class EqualsSymbolicallyMatcher : public Catch::MatcherBase<GiNaC::ex> {
 
  private:
   bool run(const detail::Side& lhs) const {
-    out_ = std::make_shared<detail::Outcome>();
+    out_ = std::make_shared<detail::MatchOutcome>();
     return detail::decide(lhs, rhs_, assume_, *out_);
   }
 
   detail::Side rhs_;
   std::string assume_;
   // Shared with the copy Catch keeps (it matches with the original, describes with the copy).
-  mutable std::shared_ptr<detail::Outcome> out_;
+  mutable std::shared_ptr<detail::MatchOutcome> out_;
 };
 
 // Earlier names of the one matcher type.

@@ -8,8 +8,8 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "derivations/core/claims.hpp"
-#include "derivations/core/io.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/syntax/io.hpp"
 #include "derivations/exec/pool.hpp"
 #include "derivations/exec/progress.hpp"
 #include "derivations/exec/wire.hpp"
@@ -25,7 +25,7 @@ std::uint32_t read_u32(const std::string& s, std::size_t at) {
 }
 
 // The reason of an outcome that did not finish, as verdicts and errors print it.
-std::string budget_reason(const Outcome& o) { return o.reason; }
+std::string budget_reason(const TaskOutcome& o) { return o.reason; }
 
 // Reads every file in a worker first: a file whose reading runs away costs a worker, not the
 // run. Returns, per file, the error if reading failed.
@@ -48,7 +48,7 @@ std::vector<std::optional<InputError>> try_reading(const std::vector<std::string
         task = u32_bytes(static_cast<std::uint32_t>(i++));
         return true;
       },
-      [&](Outcome&& o) {
+      [&](TaskOutcome&& o) {
         const std::string& path = files[out.size()];
         if (!o.done())
           out.emplace_back(InputError({path, 0, 0}, "reading this file did not finish: " + budget_reason(o) +
@@ -103,7 +103,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& files, const
         ++next;
         return true;
       },
-      [&](Outcome&& o) {
+      [&](TaskOutcome&& o) {
         const StepRef ref = steps[delivered++];
         FileReport& fr = reports[ref.file];
         const Step* step = &fr.derivation->steps[ref.step];
@@ -149,10 +149,10 @@ void ClaimsTally::count(const std::string& verdict) {
 }
 
 int ClaimsTally::exit_code() const {
-  if (malformed) return 2;
-  if (refuted) return 1;
-  if (undecided) return 3;
-  return 0;
+  if (malformed) return kExitInputError;
+  if (refuted) return kExitRefuted;
+  if (undecided) return kExitUndecided;
+  return kExitOk;
 }
 
 namespace {
@@ -205,7 +205,7 @@ ClaimsTally check_claims(const std::string& file, const Shard& shard, bool timin
         }
         return false;
       },
-      [&](Outcome&& o) {
+      [&](TaskOutcome&& o) {
         Pending p = std::move(pending.front());
         pending.pop_front();
         std::string result;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "derivations/core/report.hpp"
+#include "derivations/report/report.hpp"
 #include "derivations/exec/budget.hpp"
 
 namespace dc::exec {

@@ -321,13 +321,13 @@ struct Pool::Impl {
     return ok;
   }
 
-  Outcome budget_outcome(Outcome::Status s, const std::string& extra = "") const {
-    Outcome o;
+  TaskOutcome budget_outcome(TaskOutcome::Status s, const std::string& extra = "") const {
+    TaskOutcome o;
     o.status = s;
     switch (s) {
-      case Outcome::Status::TimeBudget: o.reason = "time budget " + seconds_text(budget.cpu_seconds) + " exceeded"; break;
-      case Outcome::Status::MemoryBudget: o.reason = "memory budget " + bytes_text(budget.memory_bytes) + " exceeded"; break;
-      case Outcome::Status::WallBudget:
+      case TaskOutcome::Status::TimeBudget: o.reason = "time budget " + seconds_text(budget.cpu_seconds) + " exceeded"; break;
+      case TaskOutcome::Status::MemoryBudget: o.reason = "memory budget " + bytes_text(budget.memory_bytes) + " exceeded"; break;
+      case TaskOutcome::Status::WallBudget:
         o.reason = "no answer within the wall-clock backstop of " + seconds_text(budget.wall_seconds());
         break;
       default: o.reason = extra; break;
@@ -335,14 +335,14 @@ struct Pool::Impl {
     return o;
   }
 
-  void run(const std::function<bool(std::string&)>& next, const std::function<void(Outcome&&)>& done, std::size_t window) {
+  void run(const std::function<bool(std::string&)>& next, const std::function<void(TaskOutcome&&)>& done, std::size_t window) {
     if (window == 0) window = 2048 * static_cast<std::size_t>(jobs);
-    std::map<std::size_t, Outcome> ready;
+    std::map<std::size_t, TaskOutcome> ready;
     std::size_t next_index = 0, next_emit = 0;
     std::deque<std::size_t> task_bytes;   // sizes of the tasks next_emit .. next_index - 1
     std::size_t window_bytes = 0;
     bool more = true;
-    auto finish = [&](Worker& w, Outcome o) {
+    auto finish = [&](Worker& w, TaskOutcome o) {
       o.seconds = std::chrono::duration<double>(Clock::now() - w.start).count();
       ready.emplace(w.task, std::move(o));
       w.busy = false;
@@ -372,7 +372,7 @@ struct Pool::Impl {
           if (!ok) stop(w, true);
         }
         if (!ok) {
-          ready.emplace(index, budget_outcome(Outcome::Status::Crashed, "a worker process could not be started"));
+          ready.emplace(index, budget_outcome(TaskOutcome::Status::Crashed, "a worker process could not be started"));
           continue;
         }
         w.busy = true;
@@ -418,23 +418,23 @@ struct Pool::Impl {
               if (w.buf.size() >= 9 + n) {
                 char status = w.buf[0];
                 std::string payload = w.buf.substr(9, n);
-                Outcome o;
+                TaskOutcome o;
                 if (status == kDone) {
                   o.payload = std::move(payload);
                 } else if (status == kTime) {
-                  o = budget_outcome(Outcome::Status::TimeBudget);
+                  o = budget_outcome(TaskOutcome::Status::TimeBudget);
                 } else if (status == kMemory) {
-                  o = budget_outcome(Outcome::Status::MemoryBudget);
+                  o = budget_outcome(TaskOutcome::Status::MemoryBudget);
                 } else if (status == kSignal) {
                   int sig = std::atoi(payload.c_str());
-                  o = sig == SIGABRT ? budget_outcome(Outcome::Status::Crashed,
+                  o = sig == SIGABRT ? budget_outcome(TaskOutcome::Status::Crashed,
                                                       "the computation was aborted (SIGABRT; an allocation beyond the memory budget " +
                                                           bytes_text(budget.memory_bytes) + " ends this way)")
-                      : sig == SIGSEGV ? budget_outcome(Outcome::Status::Crashed,
+                      : sig == SIGSEGV ? budget_outcome(TaskOutcome::Status::Crashed,
                                                         "the computation ended with SIGSEGV (stack exhausted by deep recursion, or a fault)")
-                                       : budget_outcome(Outcome::Status::Crashed, "the computation ended with " + signal_name(sig));
+                                       : budget_outcome(TaskOutcome::Status::Crashed, "the computation ended with " + signal_name(sig));
                 } else {
-                  o = budget_outcome(Outcome::Status::Crashed, "the computation failed: " + payload);
+                  o = budget_outcome(TaskOutcome::Status::Crashed, "the computation failed: " + payload);
                 }
                 finish(w, std::move(o));
                 if (status != kDone) reap(w);
@@ -447,7 +447,7 @@ struct Pool::Impl {
           std::size_t task = w.task;
           auto start = w.start;
           std::string how = reap(w);
-          Outcome o = budget_outcome(Outcome::Status::Crashed, how + " without an answer");
+          TaskOutcome o = budget_outcome(TaskOutcome::Status::Crashed, how + " without an answer");
           o.seconds = std::chrono::duration<double>(Clock::now() - start).count();
           ready.emplace(task, std::move(o));
         }
@@ -457,7 +457,7 @@ struct Pool::Impl {
       for (Worker* wp : polled) {
         Worker& w = *wp;
         if (w.busy && std::chrono::duration<double>(now - w.start).count() > budget.wall_seconds()) {
-          Outcome o = budget_outcome(Outcome::Status::WallBudget);
+          TaskOutcome o = budget_outcome(TaskOutcome::Status::WallBudget);
           finish(w, std::move(o));
           stop(w, true);
         }
@@ -469,20 +469,20 @@ struct Pool::Impl {
 Pool::Pool(int jobs, Budget budget, Handler handler) : impl_(std::make_unique<Impl>(jobs, budget, std::move(handler))) {}
 Pool::~Pool() = default;
 
-void Pool::run(const std::function<bool(std::string&)>& next, const std::function<void(Outcome&&)>& done,
+void Pool::run(const std::function<bool(std::string&)>& next, const std::function<void(TaskOutcome&&)>& done,
                std::size_t window) {
   impl_->run(next, done, window);
 }
 
-Outcome Pool::run_one(const std::string& task) {
-  Outcome out;
+TaskOutcome Pool::run_one(const std::string& task) {
+  TaskOutcome out;
   bool given = false;
   impl_->run([&](std::string& t) {
     if (given) return false;
     t = task;
     given = true;
     return true;
-  }, [&](Outcome&& o) { out = std::move(o); }, 1);
+  }, [&](TaskOutcome&& o) { out = std::move(o); }, 1);
   return out;
 }
 

@@ -21,7 +21,7 @@
 
 namespace dc::exec {
 
-struct Outcome {
+struct TaskOutcome {
   enum class Status { Done, TimeBudget, MemoryBudget, WallBudget, Crashed };
   Status status = Status::Done;
   std::string payload;   // Done: what the handler returned
@@ -49,11 +49,11 @@ class Pool {
   // The window must be wide: results are delivered in order, so while one slow task runs the
   // other workers go on only as far as the window reaches (64 per worker cost a third of the
   // throughput at 2 jobs on a generated bank; docs/performance.md, "Claim banks").
-  void run(const std::function<bool(std::string& task)>& next, const std::function<void(Outcome&&)>& done,
+  void run(const std::function<bool(std::string& task)>& next, const std::function<void(TaskOutcome&&)>& done,
            std::size_t window = 0);
 
   // One task, supervised (the CLI's `equal` and `eval`).
-  Outcome run_one(const std::string& task);
+  TaskOutcome run_one(const std::string& task);
 
   int jobs() const;
   const Budget& budget() const;

@@ -23,27 +23,27 @@ void Writer::pairs(const std::vector<std::pair<std::string, std::string>>& p) {
   }
 }
 
-std::uint64_t Reader::u64() {
+std::uint64_t WireReader::u64() {
   need(8);
   std::uint64_t v;
   std::memcpy(&v, in_.data() + at_, 8);
   at_ += 8;
   return v;
 }
-double Reader::f64() {
+double WireReader::f64() {
   std::uint64_t u = u64();
   double v;
   std::memcpy(&v, &u, 8);
   return v;
 }
-std::string Reader::str() {
+std::string WireReader::str() {
   std::uint64_t n = u64();
   need(n);
   std::string s = in_.substr(at_, n);
   at_ += n;
   return s;
 }
-std::vector<std::pair<std::string, std::string>> Reader::pairs() {
+std::vector<std::pair<std::string, std::string>> WireReader::pairs() {
   std::vector<std::pair<std::string, std::string>> p(u64());
   for (auto& [a, b] : p) {
     a = str();
@@ -51,7 +51,7 @@ std::vector<std::pair<std::string, std::string>> Reader::pairs() {
   }
   return p;
 }
-void Reader::need(std::uint64_t n) const {
+void WireReader::need(std::uint64_t n) const {
   if (n > in_.size() - at_) throw std::runtime_error("truncated result from a worker process");
 }
 
@@ -66,7 +66,7 @@ void put(Writer& w, const InputError& e) {
   w.str(e.line_text());
 }
 
-InputError get_error(Reader& r) {
+InputError get_error(WireReader& r) {
   SourcePos p;
   p.file = r.str();
   p.line = static_cast<int>(r.i64());
@@ -101,7 +101,7 @@ void put(Writer& w, const Verdict& v) {
   w.str(v.hint);
 }
 
-Verdict get_verdict(Reader& r) {
+Verdict get_verdict(WireReader& r) {
   Verdict v;
   v.kind = static_cast<VerdictKind>(r.i64());
   v.method = r.str();
@@ -142,7 +142,7 @@ std::string encode(const StepResult& res) {
 }
 
 StepResult decode_step_result(const std::string& bytes, const Step* step) {
-  Reader r(bytes);
+  WireReader r(bytes);
   StepResult res;
   res.step = step;
   res.verdict = get_verdict(r);
@@ -165,7 +165,7 @@ std::string encode(const InputError& e) {
 }
 
 InputError decode_input_error(const std::string& bytes) {
-  Reader r(bytes);
+  WireReader r(bytes);
   return get_error(r);
 }
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "derivations/core/rules.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/rules/check.hpp"
+#include "derivations/syntax/source.hpp"
 
 namespace dc::exec {
 
@@ -26,9 +26,9 @@ class Writer {
   std::string out_;
 };
 
-class Reader {
+class WireReader {
  public:
-  explicit Reader(const std::string& in) : in_(in) {}
+  explicit WireReader(const std::string& in) : in_(in) {}
   std::uint64_t u64();
   std::int64_t i64() { return static_cast<std::int64_t>(u64()); }
   double f64();

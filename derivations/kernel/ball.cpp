@@ -122,9 +122,9 @@ namespace {
 // need an exponent that does not fit in memory.
 constexpr long kMaxExpBits = 1L << 26;
 
-class Evaluator {
+class BallEvaluator {
  public:
-  explicit Evaluator(long prec, const GiNaC::exmap* point = nullptr) : prec_(prec), point_(point) {}
+  explicit BallEvaluator(long prec, const GiNaC::exmap* point = nullptr) : prec_(prec), point_(point) {}
   std::string why;
 
   BallStatus eval(const ex& e, arb_t out) {
@@ -492,7 +492,7 @@ Ball enclose(const ex& constant, long prec_bits) { return enclose_at(constant, n
 Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) {
   Ball b;
   b.prec_bits = prec_bits;
-  Evaluator ev(prec_bits, point);
+  BallEvaluator ev(prec_bits, point);
   try {
     b.status = ev.eval(e, b.impl->v);
   } catch (const std::exception&) {

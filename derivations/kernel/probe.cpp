@@ -6,14 +6,14 @@
 #include <cmath>
 #include <sstream>
 
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/inspect.hpp"
+#include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball.hpp"
 
 namespace dc::kernel {
 
 using GiNaC::ex;
 using GiNaC::numeric;
-namespace d = dc::detail;
 
 namespace {
 
@@ -99,8 +99,8 @@ Substituted substitute_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& p
     s.l = lhs.subs(p, GiNaC::subs_options::no_pattern);
     s.r = rhs.subs(p, GiNaC::subs_options::no_pattern);
     if (abstract) {
-      s.l = d::replace_abstract(s.l, fseed);
-      s.r = d::replace_abstract(s.r, fseed);
+      s.l = detail::replace_abstract(s.l, fseed);
+      s.r = detail::replace_abstract(s.r, fseed);
     }
     s.ok = true;
   } catch (const std::exception&) {
@@ -129,8 +129,8 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     v.detail = v.reason;
     return v;
   }
-  d::PointSampler sampler({lhs, rhs}, ctx);
-  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
+  detail::PointSampler sampler({lhs, rhs}, ctx);
+  bool abstract = detail::has_abstract_application(lhs) || detail::has_abstract_application(rhs);
   std::uint64_t fn_seed = opt.seed ^ 0xA5A5A5A55A5A5A5Aull;
 
   const CompareOptions co4 = confirmation(co);
@@ -168,7 +168,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     return v;
   }
 
-  d::Rng rng(opt.seed);
+  detail::Rng rng(opt.seed);
   const int need = std::max(1, opt.probe_points);
   const int max_attempts = std::max(100, need * 40);
   int agreed = 0, attempts = 0, excluded = 0, undefined = 0, neither_real = 0, unknown = 0;
@@ -183,7 +183,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
   // only at a = 0, such as sqrt(x^2 + a^2) = abs(a) + O(x^2), is caught there).
   std::vector<std::pair<ex, ex>> specials;
   for (const auto& sym : sampler.symbols()) {
-    const Domain dom = d::domain_of(sym, ctx);
+    const Domain dom = detail::domain_of(sym, ctx);
     if (dom.kind == Domain::Kind::Real || dom.kind == Domain::Kind::Nonnegative) specials.push_back({sym, 0});
     if (dom.kind == Domain::Kind::Interval) {
       if (!dom.lo_open) specials.push_back({sym, dom.lo});
@@ -198,7 +198,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       const auto& [sym, value] = specials[static_cast<std::size_t>(special)];
       p[sym] = value;
       admissible = true;
-      for (const Constraint* k : sampler.constraints()) admissible = admissible && k->holds_at(p);
+      for (const Constraint* k : sampler.constraints()) admissible = admissible && kernel::holds_at(*k, p);
     }
     if (!admissible) {
       if (counting) ++excluded;
@@ -242,7 +242,7 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     set_refuted(v, c);
     v.points = agreed;
     v.point = sampler.describe(p);
-    std::string where = v.point.empty() ? std::string("an abstract-function sample") : d::join_point(v.point);
+    std::string where = v.point.empty() ? std::string("an abstract-function sample") : detail::join_point(v.point);
     v.detail = "differs at " + where + ": " + difference_text(c) + " (certified by ball arithmetic at " +
                std::to_string(c.digits) + " digits)";
     if (abstract) v.detail += " (abstract function values drawn at random)";
@@ -323,9 +323,9 @@ PointComparison compare_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& 
 // difference, the symbolic stage is wrong (a bug, or a rewrite applied outside its domain).
 // Returns the contradiction's description, or "" when the witness agrees or cannot decide.
 std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
-  d::PointSampler sampler({lhs, rhs}, ctx);
-  bool abstract = d::has_abstract_application(lhs) || d::has_abstract_application(rhs);
-  d::Rng rng(opt.seed ^ 0x5157A1E55ull);
+  detail::PointSampler sampler({lhs, rhs}, ctx);
+  bool abstract = detail::has_abstract_application(lhs) || detail::has_abstract_application(rhs);
+  detail::Rng rng(opt.seed ^ 0x5157A1E55ull);
   const CompareOptions co = compare_options(opt);
   for (int attempt = 0; attempt < 12; ++attempt) {
     bool admissible = false;
@@ -340,7 +340,7 @@ std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTabl
       c = compare_at(lhs, rhs, &p, co);
     }
     if (certified_counterexample(c))
-      return "at " + d::join_point(sampler.describe(p)) + ": " + difference_text(c);
+      return "at " + detail::join_point(sampler.describe(p)) + ": " + difference_text(c);
     if (c.kind == PointComparison::Kind::Agree) return "";
   }
   return "";

@@ -14,10 +14,9 @@
 
 #include <ginac/ginac.h>
 
-#include "derivations/core/prove.hpp"
 #include "derivations/kernel/ball.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/verdict.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/symbolic/verdict.hpp"
 
 namespace dc::kernel {
 

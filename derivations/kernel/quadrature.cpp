@@ -10,13 +10,13 @@
 
 #include <algorithm>
 
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/inspect.hpp"
+#include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball_impl.hpp"
 
 namespace dc::kernel {
 
 using GiNaC::ex;
-namespace d = dc::detail;
 
 namespace {
 
@@ -177,8 +177,8 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
   v.method = "rigorous quadrature";
   GiNaC::realsymbol dummy("dc_quadrature_dummy");
   ex f0 = f.subs(x == dummy, GiNaC::subs_options::no_pattern);
-  d::PointSampler sampler({a, b, G, f0}, ctx);
-  d::Rng rng(opt.seed ^ 0x1D7E6A11ull);
+  detail::PointSampler sampler({a, b, G, f0}, ctx);
+  detail::Rng rng(opt.seed ^ 0x1D7E6A11ull);
   const int need = std::max(1, opt.probe_points);
   int agreed = 0, attempts = 0, unusable = 0, integral_failures = 0;
   double max_rel = 0;
@@ -265,7 +265,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
     std::vector<std::pair<ex, ex>> specials;
     for (const auto& sym : sampler.symbols()) {
       if (sym.is_equal(dummy)) continue;
-      const Domain dom = d::domain_of(sym, ctx);
+      const Domain dom = detail::domain_of(sym, ctx);
       if (dom.kind == Domain::Kind::Real || dom.kind == Domain::Kind::Nonnegative) specials.push_back({sym, 0});
       if (dom.kind == Domain::Kind::Interval) {
         if (!dom.lo_open) specials.push_back({sym, dom.lo});
@@ -278,7 +278,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
       p.erase(dummy);
       p[specials[k].first] = specials[k].second;
       admissible = true;
-      for (const Constraint* cons : sampler.constraints()) admissible = admissible && cons->holds_at(p);
+      for (const Constraint* cons : sampler.constraints()) admissible = admissible && kernel::holds_at(*cons, p);
       if (!admissible) continue;
       bool usable = true, unknown = false;
       const PointComparison c = evaluate(p, usable, unknown);

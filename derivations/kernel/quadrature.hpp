@@ -4,9 +4,8 @@
 #pragma once
 #include <ginac/ginac.h>
 
-#include "derivations/core/prove.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/verdict.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/symbolic/verdict.hpp"
 #include "derivations/kernel/ball.hpp"
 
 namespace dc::kernel {

@@ -172,11 +172,11 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
 }
 
 int CheckSummary::exit_code(bool strict) const {
-  if (input_errors > 0) return 2;
-  if (refuted > 0 || errors > 0) return 1;
-  if (undecided > 0) return 3;
-  if (strict && errata > 0) return 1;
-  return 0;
+  if (input_errors > 0) return kExitInputError;
+  if (refuted > 0 || errors > 0) return kExitRefuted;
+  if (undecided > 0) return kExitUndecided;
+  if (strict && errata > 0) return kExitRefuted;
+  return kExitOk;
 }
 
 void CheckSummary::add(StepResult r) {

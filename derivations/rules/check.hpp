@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/prove.hpp"
-#include "derivations/core/verdict.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/verdict.hpp"
 
 namespace dc {
 

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 
-#include "derivations/core/functions.hpp"
-#include "derivations/core/printer.hpp"
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/symbolic/inspect.hpp"
 
 namespace dc::rules {
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <utility>
 
-#include "derivations/core/symbols.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 namespace dc::rules {
 

@@ -3,8 +3,9 @@
 
 #include <algorithm>
 
-#include "derivations/core/functions.hpp"
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/inspect.hpp"
+#include "derivations/kernel/range.hpp"
 
 namespace dc::rules {
 

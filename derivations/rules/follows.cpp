@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <functional>
 
-#include "derivations/core/functions.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/counterexample.hpp"
 
 namespace dc::rules {

@@ -1,8 +1,8 @@
 // value_in_domain (in_domain.hpp).
 #include "derivations/rules/in_domain.hpp"
 
-#include "derivations/core/printer.hpp"
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/kernel/range.hpp"
 #include "derivations/rules/context.hpp"
 
 namespace dc::rules {
@@ -10,7 +10,6 @@ namespace dc::rules {
 namespace {
 
 using GiNaC::ex;
-namespace d = dc::detail;
 
 // The claimed root g of an unknown declared `in (lo, hi)` (ends open or closed) must lie in that
 // interval for every admissible parameter value: a constant g is compared exactly (or at 50
@@ -34,7 +33,7 @@ Verdict in_interval(const ex& g, const Domain& dom, const SymbolTable& t, const 
       all.add(r, what);
       return;
     }
-    if (open ? d::provably_positive(gap, t) : d::range_of(gap, t).nonnegative()) {
+    if (open ? detail::provably_positive(gap, t) : detail::range_of(gap, t).nonnegative()) {
       all.add(proved("root in the declared domain", what + " (range of the root)"), what);
       return;
     }
@@ -63,7 +62,7 @@ Verdict in_interval(const ex& g, const Domain& dom, const SymbolTable& t, const 
       // an open end equal to the range's bound: u must stay off the argument that reaches it
       const ex u_at_lo = f == "acos" ? ex(1) : ex(-1), u_at_hi = f == "acos" ? ex(-1) : ex(1);
       auto off = [&](const ex& bound) {   // u < 1 (bound 1) or u > -1 (bound -1)
-        return d::provably_positive(bound.is_equal(1) ? 1 - u : u + 1, t);
+        return detail::provably_positive(bound.is_equal(1) ? 1 - u : u + 1, t);
       };
       auto end_ok = [&](const ex& range_end, const ex& dom_end, bool open, const ex& u_end, bool lower) {
         if (!(lower ? at_least(range_end, dom_end) : at_least(dom_end, range_end))) return false;
@@ -73,11 +72,11 @@ Verdict in_interval(const ex& g, const Domain& dom, const SymbolTable& t, const 
       bool lo_ok = numeric_end(dom.lo) &&
                    (end_ok(lo, dom.lo, dom.lo_open, u_at_lo, true) ||
                     (dom.lo.is_zero() && f != "acos" &&
-                     (dom.lo_open ? d::provably_positive(u, t) : d::range_of(u, t).nonnegative())));
+                     (dom.lo_open ? detail::provably_positive(u, t) : detail::range_of(u, t).nonnegative())));
       bool hi_ok = numeric_end(dom.hi) &&
                    (end_ok(hi, dom.hi, dom.hi_open, u_at_hi, false) ||
                     (dom.hi.is_zero() && f != "acos" &&
-                     (dom.hi_open ? d::provably_positive(-u, t) : d::range_of(-u, t).nonnegative())));
+                     (dom.hi_open ? detail::provably_positive(-u, t) : detail::range_of(-u, t).nonnegative())));
       if (lo_ok && hi_ok)
         return proved("root in the declared domain", "the range of " + f + " lies in " + dom.to_string());
     }
@@ -99,7 +98,7 @@ Verdict sign_holds(const ex& g, bool strict, const std::string& what, const Symb
     r.detail = print_text(g, t) + " is not " + what;
     return r;
   }
-  if (strict ? d::provably_positive(g, t) : d::range_of(g, t).nonnegative())
+  if (strict ? detail::provably_positive(g, t) : detail::range_of(g, t).nonnegative())
     return proved("value in the declared domain", what + " (signs of the declarations)");
   Verdict r = prove_equal(GiNaC::sqrt(GiNaC::pow(g, 2)), g, t, opt);
   r.method = prefix_method("value in the declared domain", r.method);

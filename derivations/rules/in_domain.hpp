@@ -10,9 +10,9 @@
 #pragma once
 #include <ginac/ginac.h>
 
-#include "derivations/core/prove.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/verdict.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/symbolic/verdict.hpp"
 
 namespace dc::rules {
 

@@ -7,8 +7,8 @@
 // for every t (see has_application_at); the others are used as they are.
 #include <functional>
 
-#include "derivations/core/integral_equal.hpp"
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/calculus/integral_equal.hpp"
+#include "derivations/symbolic/inspect.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"

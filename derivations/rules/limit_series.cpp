@@ -1,10 +1,10 @@
 // `by limit x -> p[+|-] [of A] [with ...]`, `by series x -> p [of A]` and
 // `by first_order d1, d2 of A`: the limit, first-order series or first-order part of A's
 // expression (or, without `of`, of the claim's first side) is derived with the limit helper
-// (derivations/core/limit.hpp), and the claim must equal it. A limit side may be `oo`, `-oo` or
+// (derivations/calculus/limit_entry.hpp), and the claim must equal it. A limit side may be `oo`, `-oo` or
 // `undefined` (the limit does not exist: one-sided limits differ, oscillation, no real value).
-#include "derivations/core/big_o.hpp"
-#include "derivations/core/limit.hpp"
+#include "derivations/calculus/big_o.hpp"
+#include "derivations/calculus/limit_entry.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
 

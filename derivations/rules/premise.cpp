@@ -2,7 +2,7 @@
 // declared symbols and dimensions (check.cpp), and its side conditions only warn.
 #include "derivations/rules/dispatch.hpp"
 
-#include "derivations/core/expr.hpp"
+#include "derivations/syntax/expr.hpp"
 #include "derivations/rules/follows.hpp"
 #include "derivations/rules/in_domain.hpp"
 

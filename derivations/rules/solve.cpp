@@ -12,8 +12,7 @@
 #include <functional>
 #include <optional>
 
-#include "derivations/core/prove_detail.hpp"
-#include "derivations/core/functions.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/elimination.hpp"
 #include "derivations/rules/follows.hpp"
@@ -24,7 +23,6 @@ namespace dc::rules {
 
 namespace {
 
-namespace d = dc::detail;
 
 
 

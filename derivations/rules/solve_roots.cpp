@@ -16,7 +16,10 @@
 // the domains and the assumptions, and ball arithmetic separates u from G there.
 #include <set>
 
-#include "derivations/core/prove_detail.hpp"
+#include "derivations/symbolic/inspect.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/kernel/range.hpp"
+#include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball.hpp"
 #include "derivations/rules/counterexample.hpp"
 #include "derivations/rules/elimination.hpp"
@@ -60,12 +63,12 @@ SymbolTable with_interior(const SymbolTable& t, const ex& x) {
   return out;
 }
 
-struct Outcome {
+struct RootsOutcome {
   Verdict v;
   std::string note;   // how the other roots were excluded
 };
 
-Outcome unique(const std::string& method, const std::string& note) { return {proved("only root (" + method + ")"), note}; }
+RootsOutcome unique(const std::string& method, const std::string& note) { return {proved("only root (" + method + ")"), note}; }
 
 // The counterexample `candidate` (a refutation of r = G or of r's sign, at parameter values)
 // extended by x = r: a certified point where another root lies in the domain and the claim fails.
@@ -87,7 +90,7 @@ std::optional<Verdict> other_root_point(StepContext& c, const Reduction& red, co
     return std::nullopt;
   P[X] = rv;
   for (const auto& k : symbols.constraints())
-    if ((k.lhs.has(X) || k.rhs.has(X)) && !k.holds_at(P)) return std::nullopt;
+    if ((k.lhs.has(X) || k.rhs.has(X)) && !kernel::holds_at(k, P)) return std::nullopt;
   Verdict v;
   for (const auto& s : symbols.all()) {
     auto it = P.find(s.sym);
@@ -113,7 +116,7 @@ std::optional<Verdict> other_root_point(StepContext& c, const Reduction& red, co
 
 // The other root r of a quadratic: excluded from the domain of X, equal to G, or a certified
 // counterexample.
-Outcome other_root(StepContext& c, const Unknowns& u, const Reduction& red, const std::vector<Eq>& eqs, const ex& X,
+RootsOutcome other_root(StepContext& c, const Unknowns& u, const Reduction& red, const std::vector<Eq>& eqs, const ex& X,
                    const ex& r, const ex& G) {
   const SymbolTable& symbols = c.d.symbols;
   const std::string name = c.text(X);
@@ -171,7 +174,7 @@ Outcome other_root(StepContext& c, const Unknowns& u, const Reduction& red, cons
 }
 
 // One equation P = 0 in x alone (atomized numerator, stand-in form).
-Outcome check_equation(StepContext& c, const Unknowns& u, const Reduction& red, const std::vector<Eq>& eqs,
+RootsOutcome check_equation(StepContext& c, const Unknowns& u, const Reduction& red, const std::vector<Eq>& eqs,
                        const ex& P, const ex& x, const ex& G) {
   const SymbolTable& symbols = c.d.symbols;
   const GiNaC::symbol& xs = GiNaC::ex_to<GiNaC::symbol>(x);
@@ -237,10 +240,10 @@ Verdict only_root(StepContext& c, const Unknowns& u, const std::vector<Eq>& eqs,
     if (el.coef.has(x))
       return undecided("solve", "other roots are not excluded: eliminating " + c.text(c.atoms.restore(u.out(c, el.var))) +
                                     " divides by an expression in " + name);
-  std::optional<Outcome> first;
+  std::optional<RootsOutcome> first;
   for (const auto& l : red.leftover) {
     if (!l.e.has(x) || has_any(l.e, elim)) continue;
-    Outcome o = check_equation(c, u, red, eqs, l.e, x, G);
+    RootsOutcome o = check_equation(c, u, red, eqs, l.e, x, G);
     if (o.v.holds()) {
       note = o.note;
       return o.v;

@@ -1,7 +1,7 @@
 // `by solves_ode A wrt t [with y(T0) = value, y'(T0) = v0, ...]`: the claim `y(t) = G` solves
 // the ODE A: its residual with y and its derivatives (up to the fourth) replaced by G's vanishes,
 // and G meets every initial condition (a prime: that derivative of G at T0).
-#include "derivations/core/functions.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 
 namespace dc::rules {

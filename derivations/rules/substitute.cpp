@@ -4,7 +4,7 @@
 // brings one in; a counterexample must then respect omega = sqrt(k/m) too.)
 #include <algorithm>
 
-#include "derivations/core/functions.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
 

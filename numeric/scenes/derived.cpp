@@ -6,10 +6,10 @@
 #include <memory>
 #include <mutex>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/source.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/source.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 namespace dc::scenes {
 

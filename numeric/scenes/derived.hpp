@@ -1,5 +1,5 @@
 // Closed forms loaded from the derivation files by label (no hand-typed copies), evaluated
-// with the CLN reference (numeric/reference.hpp) and rounded to double.
+// with the CLN reference (numeric/reference/reference.hpp) and rounded to double.
 //
 // The scenes ask for a closed form through closed_form(): it evaluates FILE:LABEL from the
 // derivation directory when that is given and holds the label, and otherwise falls back to the

@@ -11,9 +11,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "derivations/core/io.hpp"
-#include "numeric/chart_data.hpp"
-#include "numeric/chart_plot.hpp"
+#include "derivations/syntax/io.hpp"
+#include "numeric/charts/chart_data.hpp"
+#include "numeric/charts/chart_plot.hpp"
 
 using namespace dc::chart;
 

@@ -7,8 +7,8 @@
 
 #include <catch2/catch.hpp>
 
-#include "numeric/chart_checker.hpp"
-#include "numeric/chart_ode_maps.hpp"
+#include "numeric/charts/chart_checker.hpp"
+#include "numeric/charts/chart_ode_maps.hpp"
 
 using namespace dc::chart;
 

@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "numeric/chart_data.hpp"
+#include "numeric/charts/chart_data.hpp"
 
 using namespace dc::chart;
 

@@ -23,10 +23,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/report.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/report.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

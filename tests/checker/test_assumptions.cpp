@@ -9,10 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/rules.hpp"
-#include "derivations/core/satisfiable.hpp"
+#include "derivations/claims/claims.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/rules/check.hpp"
+#include "derivations/decide/satisfiable.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
+#include "derivations/claims/claims.hpp"
 
 namespace {
 std::string data(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/" + rel; }
@@ -173,7 +173,7 @@ TEST_CASE("definite integrals as a side of an equal claim", "[claims][integral]"
       {R"J({"kind":"equal","lhs":"integral(exp(x), x, 0, integral(1, t, 0, 1))","rhs":"exp(1)"})J", "refuted", "antiderivative exp(x)"},
       // no elementary antiderivative: an improper integral stays undecided
       {R"J({"kind":"equal","lhs":"integral(exp(-x^2), x, 0, oo)","rhs":"sqrt(pi)/2"})J", "undecided", "integral"},
-      // improper integrals: the antiderivative's limits at the ends (derivations/integrals/definite.hpp)
+      // improper integrals: the antiderivative's limits at the ends (derivations/calculus/definite.hpp)
       {R"J({"kind":"equal","lhs":"integral(exp(-x), x, 0, oo)","rhs":"1"})J", "proved", "F(oo) = 0, F(0+) = -1"},
       {R"J({"kind":"equal","lhs":"integral(exp(-x), x, 0, oo)","rhs":"2"})J", "refuted", "antiderivative -exp(-x)"},
       {R"J({"kind":"equal","lhs":"integral(F0*exp(-t/tau), t, 0, oo)","rhs":"F0*tau","assumptions":{"F0":"positive","tau":"positive"}})J",

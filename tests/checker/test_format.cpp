@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

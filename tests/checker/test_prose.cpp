@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/latex.hpp"
-#include "derivations/core/prose.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/latex.hpp"
+#include "derivations/syntax/prose.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

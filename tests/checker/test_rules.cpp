@@ -6,9 +6,9 @@
 
 #include <string>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/report.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/report.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include <memory>
 #include <string>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/report.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/report.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace {
 

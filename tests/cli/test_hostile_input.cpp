@@ -18,8 +18,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/io.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/syntax/source.hpp"
 
 namespace fs = std::filesystem;
 using cli_test::lines_of;

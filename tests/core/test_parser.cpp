@@ -5,8 +5,8 @@
 #include <random>
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/source.hpp"
 
 using namespace dc;
 

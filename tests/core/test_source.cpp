@@ -1,8 +1,8 @@
 // InputError formatting: GCC-style header, the quoted line and a caret under the column.
 #include <catch2/catch.hpp>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/source.hpp"
 
 using namespace dc;
 

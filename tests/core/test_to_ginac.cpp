@@ -4,10 +4,10 @@
 #include <chrono>
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/functions.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/units.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/syntax/units.hpp"
 
 #if defined(DERIVCHECK_SANITIZER) && __has_include(<sanitizer/lsan_interface.h>)
 #include <sanitizer/lsan_interface.h>

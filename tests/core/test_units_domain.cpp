@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/core/units.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/syntax/units.hpp"
 
 using namespace dc;
 

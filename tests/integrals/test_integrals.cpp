@@ -10,10 +10,10 @@
 
 #include <string>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/symbols.hpp"
-#include "derivations/integrals/antiderivative.hpp"
-#include "derivations/integrals/definite.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/symbols.hpp"
+#include "derivations/calculus/antiderivative.hpp"
+#include "derivations/calculus/definite.hpp"
 #include "derivations/kernel/quadrature.hpp"
 
 namespace {

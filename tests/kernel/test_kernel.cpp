@@ -4,7 +4,7 @@
 // floating point at once: the expressions here are built from ex, as the parser builds them.)
 #include <catch2/catch.hpp>
 
-#include "derivations/core/limit.hpp"
+#include "derivations/calculus/limit_entry.hpp"
 #include "derivations/kernel/ball.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "../prove/support.hpp"

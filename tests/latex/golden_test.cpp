@@ -8,8 +8,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/latex.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/latex.hpp"
 
 namespace fs = std::filesystem;
 

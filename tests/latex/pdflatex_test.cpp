@@ -9,10 +9,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/io.hpp"
-#include "derivations/core/latex.hpp"
-#include "derivations/core/rules.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/syntax/io.hpp"
+#include "derivations/report/latex.hpp"
+#include "derivations/rules/check.hpp"
 
 namespace fs = std::filesystem;
 

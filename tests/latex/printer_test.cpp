@@ -1,4 +1,4 @@
-// Deterministic printing of GiNaC expressions (derivations/core/printer.hpp).
+// Deterministic printing of GiNaC expressions (derivations/symbolic/printer.hpp).
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -8,11 +8,11 @@
 #include <string>
 #include <unistd.h>
 
-#include "derivations/core/expr.hpp"
-#include "derivations/core/functions.hpp"
-#include "derivations/core/latex.hpp"
-#include "derivations/core/printer.hpp"
-#include "derivations/core/symbols.hpp"
+#include "derivations/syntax/expr.hpp"
+#include "derivations/symbolic/functions.hpp"
+#include "derivations/report/latex.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 using GiNaC::ex;
 using GiNaC::numeric;

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "derivations/core/derivation.hpp"
-#include "derivations/core/latex.hpp"
-#include "derivations/core/latex_read.hpp"
-#include "derivations/core/prove.hpp"
-#include "derivations/core/printer.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "derivations/report/latex.hpp"
+#include "derivations/report/latex_read.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/printer.hpp"
 
 namespace {
 

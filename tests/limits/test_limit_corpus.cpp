@@ -13,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
+#include "derivations/claims/claims.hpp"
 
 namespace {
 

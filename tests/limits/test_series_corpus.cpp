@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "derivations/core/claims.hpp"
+#include "derivations/claims/claims.hpp"
 
 namespace {
 std::string data(const std::string& rel) { return std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/" + rel; }

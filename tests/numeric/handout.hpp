@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/evaluator.hpp"
 
 namespace dc::test {

@@ -1,7 +1,7 @@
-// The certified evaluator (numeric/certified.hpp) on a corpus of hard cases of our own
+// The certified evaluator (numeric/certified/certified.hpp) on a corpus of hard cases of our own
 // (tests/data/numeric/hard.dc): cancellation, intermediate overflow and underflow, results near
 // and outside double's range. For every case and method the certificate is checked against an
-// independent reference (CLN at 60 digits, numeric/reference.hpp, not the Arb enclosure the
+// independent reference (CLN at 60 digits, numeric/reference/reference.hpp, not the Arb enclosure the
 // certificate comes from): `auto` must be within 0.5 ulp, every double method's error must be
 // within its stated bound. The plain double error is computed too, to show the cases are hard.
 #include <catch2/catch.hpp>
@@ -10,10 +10,10 @@
 #include <limits>
 #include <string>
 
-#include "derivations/core/derivation.hpp"
-#include "numeric/certified.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "derivations/reader/derivation.hpp"
+#include "numeric/certified/certified.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 namespace {
 

@@ -1,6 +1,6 @@
-// The certified automatic mode over many points (numeric/certified_batch.hpp): double-double with
+// The certified automatic mode over many points (numeric/certified/certified_batch.hpp): double-double with
 // a running error bound, then the long double tape. Checked against the CLN reference at 60
-// digits (numeric/reference.hpp), which shares no code with either bound:
+// digits (numeric/reference/reference.hpp), which shares no code with either bound:
 //   - every operation: the true value lies within the stated bound, for exact inputs and for
 //     inputs known to 2^-20, and the bound is that of double-double (not of double) arithmetic;
 //   - whatever a stage decides is the nearest double to the true value;
@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "numeric/certified.hpp"
-#include "numeric/certified_batch.hpp"
+#include "numeric/certified/certified.hpp"
+#include "numeric/certified/certified_batch.hpp"
 #include "numeric/evaluator.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 #include "tests/numeric/handout.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
-// The fast first try of the certified automatic mode (numeric/certified_fast.hpp): the tape in
+// The fast first try of the certified automatic mode (numeric/certified/certified_fast.hpp): the tape in
 // long double with a running error bound. Checked against the CLN reference at 60 digits
-// (numeric/reference.hpp), which shares no code with the running-error bound:
+// (numeric/reference/reference.hpp), which shares no code with the running-error bound:
 //   - every operation: the true value at an exact input lies within the stated bound, for input
 //     errors of the size of a double rounding up to 2^-20 relative (so propagation matters);
 //   - whenever the try says "decided", its double is the nearest double to the true value;
@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "numeric/certified.hpp"
-#include "numeric/certified_fast.hpp"
+#include "numeric/certified/certified.hpp"
+#include "numeric/certified/certified_fast.hpp"
 #include "numeric/evaluator.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 #include "tests/numeric/handout.hpp"
 
 namespace {

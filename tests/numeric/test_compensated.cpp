@@ -7,12 +7,12 @@
 #include <cmath>
 #include <map>
 
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/compensated.hpp"
 #include "numeric/crosscheck.hpp"
-#include "numeric/exact.hpp"
+#include "numeric/reference/exact.hpp"
 #include "numeric/formula_evaluator.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/reference.hpp"
 #include "handout.hpp"
 
 using namespace dc::num;

@@ -1,5 +1,5 @@
 // The double-double functions with a running error bound (numeric/dd_functions.hpp) against the
-// CLN reference at 60 digits (numeric/reference.hpp), which shares no code with them:
+// CLN reference at 60 digits (numeric/reference/reference.hpp), which shares no code with them:
 //   - every table entry and constant lies within its stated bound of the true value;
 //   - for every function, at random points of its whole range and at the hard places (arguments
 //     next to 0, to 1, to multiples of pi/2, to +-1 for asin and acos, huge and tiny), exact and
@@ -19,8 +19,8 @@
 #include "numeric/crosscheck.hpp"
 #include "numeric/dd_functions.hpp"
 #include "numeric/dd_tables.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 namespace {
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <random>
 
-#include "derivations/core/prove.hpp"
+#include "derivations/decide/prove.hpp"
 #include "numeric/evaluator.hpp"
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 using namespace dc::num;
 using GiNaC::ex;

@@ -13,10 +13,10 @@
 #include <unistd.h>
 
 #include "numeric/evaluator.hpp"
-#include "numeric/exact.hpp"
+#include "numeric/reference/exact.hpp"
 #include "numeric/jit.hpp"
-#include "numeric/reference.hpp"
-#include "numeric/chart_data.hpp"
+#include "numeric/reference/reference.hpp"
+#include "numeric/charts/chart_data.hpp"
 #include "handout.hpp"
 
 using namespace dc::num;

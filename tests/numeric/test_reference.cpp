@@ -5,8 +5,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "numeric/exact.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/exact.hpp"
+#include "numeric/reference/reference.hpp"
 
 using namespace dc::num;
 

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <map>
 
-#include "derivations/core/derivation.hpp"
+#include "derivations/reader/derivation.hpp"
 #include "numeric/crosscheck.hpp"
-#include "numeric/exact.hpp"
+#include "numeric/reference/exact.hpp"
 #include "numeric/formula_evaluator.hpp"
-#include "numeric/reference.hpp"
+#include "numeric/reference/reference.hpp"
 #include "handout.hpp"
 
 using namespace dc::num;

@@ -28,7 +28,9 @@ foreach(f bin/derivcheck
           ${libdir}/libderivcheck_symbolic.a ${libdir}/libderivcheck_numeric.a
           include/derivcheck/catch2.hpp
           include/derivcheck/derivations/catch/derivcheck_catch.hpp
-          include/derivcheck/derivations/core/prove.hpp
+          include/derivcheck/derivations/decide/prove.hpp
+          include/derivcheck/derivations/core/prove.hpp   # forwarder to the old path
+          include/derivcheck/derivations/core/prove_detail.hpp
           include/derivcheck/numeric/evaluator.hpp
           ${cmakedir}/derivcheckConfig.cmake ${cmakedir}/derivcheckConfigVersion.cmake
           ${cmakedir}/derivcheck-targets.cmake ${cmakedir}/derivcheck-catch2-targets.cmake

@@ -6,8 +6,8 @@
 
 #include <ginac/ginac.h>
 
-#include "derivations/core/prove.hpp"
-#include "derivations/core/symbols.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/symbols.hpp"
 
 namespace dc::test {
 

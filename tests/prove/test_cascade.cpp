@@ -2,8 +2,8 @@
 // a careless prover would accept a false claim or refute a true one.
 #include <catch2/catch.hpp>
 
-#include "derivations/core/functions.hpp"
-#include "derivations/core/prove.hpp"
+#include "derivations/symbolic/functions.hpp"
+#include "derivations/decide/prove.hpp"
 #include "support.hpp"
 
 using namespace dc;

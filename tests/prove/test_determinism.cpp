@@ -8,7 +8,7 @@
 #include <memory>
 #include <unistd.h>
 
-#include "derivations/core/prove.hpp"
+#include "derivations/decide/prove.hpp"
 #include "support.hpp"
 
 using namespace dc;

@@ -3,10 +3,10 @@
 
 #include <chrono>
 
-#include "derivations/core/limit.hpp"
-#include "derivations/core/prove.hpp"
-#include "derivations/core/prove_detail.hpp"
-#include "derivations/limits/limits.hpp"
+#include "derivations/calculus/limit_entry.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/limit_engine/limits.hpp"
 #include "support.hpp"
 
 using namespace dc;
@@ -175,19 +175,19 @@ TEST_CASE("limit: budgets end a runaway computation as undecided", "[limit][budg
   tight.max_steps = 50;
   // a thesis tower needs more than 50 steps
   ex f = GiNaC::exp(GiNaC::exp(GiNaC::exp(x + GiNaC::exp(-x)))) / GiNaC::exp(GiNaC::exp(GiNaC::exp(x)));
-  limits::Outcome o = limits::one_sided_limit(f, x, 0, +1, 0, T, tight);
-  REQUIRE(o.kind == limits::Outcome::Kind::Undecided);
+  limits::LimitOutcome o = limits::one_sided_limit(f, x, 0, +1, 0, T, tight);
+  REQUIRE(o.kind == limits::LimitOutcome::Kind::Undecided);
   CHECK(o.reason.rfind("budget: ", 0) == 0);
   // with the default budget it is decided
-  limits::Outcome full = limits::one_sided_limit(f, x, 0, +1, 0, T);
-  CHECK(full.kind == limits::Outcome::Kind::PlusInfinity);
+  limits::LimitOutcome full = limits::one_sided_limit(f, x, 0, +1, 0, T);
+  CHECK(full.kind == limits::LimitOutcome::Kind::PlusInfinity);
 }
 
 TEST_CASE("limit: a contradicted symbolic value is reported loudly, never as a value", "[limit]") {
   GiNaC::possymbol x("x");
   SymbolTable T;
-  limits::Outcome wrong;
-  wrong.kind = limits::Outcome::Kind::Value;
+  limits::LimitOutcome wrong;
+  wrong.kind = limits::LimitOutcome::Kind::Value;
   wrong.value = 0;
   // 1 + 1/x does not tend to 0: the sequence settles at 1
   limits::SequenceCheck c = limits::check_sequence(1 + 1 / ex(x), x, 0, +1, 0, wrong, T);
@@ -196,19 +196,19 @@ TEST_CASE("limit: a contradicted symbolic value is reported loudly, never as a v
   limits::SequenceCheck slow = limits::check_sequence(1 / GiNaC::log(GiNaC::log(x)), x, 0, +1, 0, wrong, T);
   CHECK(slow.kind == limits::SequenceCheck::Kind::Inconclusive);
   // nor a slowly diverging one: log(log(x)) -> +oo
-  limits::Outcome up;
-  up.kind = limits::Outcome::Kind::PlusInfinity;
+  limits::LimitOutcome up;
+  up.kind = limits::LimitOutcome::Kind::PlusInfinity;
   limits::SequenceCheck slow_up = limits::check_sequence(GiNaC::log(GiNaC::log(x)), x, 0, +1, 0, up, T);
   CHECK(slow_up.kind != limits::SequenceCheck::Kind::Contradicted);
   // and a slowly diverging log is not mistaken for a constant
-  limits::Outcome constant;
-  constant.kind = limits::Outcome::Kind::Value;
+  limits::LimitOutcome constant;
+  constant.kind = limits::LimitOutcome::Kind::Value;
   constant.value = 5;
   limits::SequenceCheck loglog = limits::check_sequence(GiNaC::log(GiNaC::log(x)), x, 0, +1, 0, constant, T);
   CHECK(loglog.kind != limits::SequenceCheck::Kind::Confirmed);
   // cancellation: (1 - cos(x))/x^2 -> 1/2 is confirmed with balls at x = 1e-64
-  limits::Outcome half;
-  half.kind = limits::Outcome::Kind::Value;
+  limits::LimitOutcome half;
+  half.kind = limits::LimitOutcome::Kind::Value;
   half.value = GiNaC::numeric(1, 2);
   limits::SequenceCheck cc = limits::check_sequence((1 - GiNaC::cos(x)) / GiNaC::pow(x, 2), x, 0, 0, +1, half, T);
   CHECK(cc.kind == limits::SequenceCheck::Kind::Confirmed);

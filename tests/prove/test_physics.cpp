@@ -2,7 +2,7 @@
 // with a counterexample.
 #include <catch2/catch.hpp>
 
-#include "derivations/core/prove.hpp"
+#include "derivations/decide/prove.hpp"
 #include "support.hpp"
 
 using namespace dc;

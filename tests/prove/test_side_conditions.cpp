@@ -1,7 +1,7 @@
 // side_conditions and check_satisfiable.
 #include <catch2/catch.hpp>
 
-#include "derivations/core/prove.hpp"
+#include "derivations/decide/prove.hpp"
 #include "support.hpp"
 
 using namespace dc;

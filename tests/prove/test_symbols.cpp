@@ -1,8 +1,9 @@
 // Domains, the symbol table and constraints.
 #include <catch2/catch.hpp>
 
-#include "derivations/core/prove.hpp"
-#include "derivations/core/source.hpp"
+#include "derivations/kernel/sample.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/syntax/source.hpp"
 #include "support.hpp"
 
 using namespace dc;
@@ -106,21 +107,21 @@ TEST_CASE("SymbolTable: functions are numbered in declaration order, at most 16"
   REQUIRE_THROWS_AS(t.declare(f), InputError);
 }
 
-TEST_CASE("Constraint::holds_at", "[symbols][constraint]") {
+TEST_CASE("kernel::holds_at", "[symbols][constraint]") {
   test::Table T;
   T.add("a", Domain::real()).add("b", Domain::real());
   ex a = T["a"], b = T["b"];
   Constraint gt{a, b, Constraint::Op::Gt, "a > b", {}};
-  REQUIRE(gt.holds_at({{a, numeric(3, 2)}, {b, numeric(1, 2)}}));
-  REQUIRE_FALSE(gt.holds_at({{a, numeric(1, 2)}, {b, numeric(1, 2)}}));
+  REQUIRE(dc::kernel::holds_at(gt, {{a, numeric(3, 2)}, {b, numeric(1, 2)}}));
+  REQUIRE_FALSE(dc::kernel::holds_at(gt, {{a, numeric(1, 2)}, {b, numeric(1, 2)}}));
   Constraint ge{a, b, Constraint::Op::Ge, "a >= b", {}};
-  REQUIRE(ge.holds_at({{a, numeric(1, 2)}, {b, numeric(1, 2)}}));
+  REQUIRE(dc::kernel::holds_at(ge, {{a, numeric(1, 2)}, {b, numeric(1, 2)}}));
   Constraint ne{a * a, 2, Constraint::Op::Ne, "a^2 != 2", {}};
-  REQUIRE(ne.holds_at({{a, numeric(7, 5)}}));
+  REQUIRE(dc::kernel::holds_at(ne, {{a, numeric(7, 5)}}));
   Constraint lt_pi{a, GiNaC::Pi, Constraint::Op::Lt, "a < pi", {}};
-  REQUIRE(lt_pi.holds_at({{a, numeric(314159, 100000)}}));
-  REQUIRE_FALSE(lt_pi.holds_at({{a, numeric(314160, 100000)}}));
+  REQUIRE(dc::kernel::holds_at(lt_pi, {{a, numeric(314159, 100000)}}));
+  REQUIRE_FALSE(dc::kernel::holds_at(lt_pi, {{a, numeric(314160, 100000)}}));
   Constraint div{1 / a, 1, Constraint::Op::Gt, "1/a > 1", {}};
-  REQUIRE_FALSE(div.holds_at({{a, numeric(0)}}));  // undefined: not admissible
-  REQUIRE_FALSE(gt.holds_at({{a, numeric(1)}}));   // b has no value
+  REQUIRE_FALSE(dc::kernel::holds_at(div, {{a, numeric(0)}}));  // undefined: not admissible
+  REQUIRE_FALSE(dc::kernel::holds_at(gt, {{a, numeric(1)}}));   // b has no value
 }

@@ -1,0 +1,764 @@
+#include "derivations/claims/claims.hpp"
+#include "derivations/calculus/install.hpp"
+
+#include <chrono>
+#include <functional>
+
+#include "derivations/syntax/io.hpp"
+#include "derivations/calculus/big_o.hpp"
+#include "derivations/calculus/integral_equal.hpp"
+#include "derivations/calculus/limit_entry.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/report/report.hpp"
+#include "derivations/decide/satisfiable.hpp"
+
+namespace dc {
+
+namespace {
+
+using GiNaC::ex;
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+bool ident_start(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool ident_char(char c) { return ident_start(c) || (c >= '0' && c <= '9') || c == '_'; }
+
+SourcePos advance(const SourcePos& o, std::size_t offset) {
+  SourcePos p = o;
+  p.col += static_cast<int>(offset);
+  return p;
+}
+
+void trim(const std::string& t, std::size_t& b, std::size_t& e) {
+  while (b < e && is_space(t[b])) ++b;
+  while (e > b && is_space(t[e - 1])) --e;
+}
+
+// Attach the offending text so errors quote it with a caret.
+InputError quoted(const InputError& e, const std::string& text) {
+  if (!e.line_text().empty()) return e;
+  return e.with_line_text(text);
+}
+
+const char* op_text(Constraint::Op op) {
+  switch (op) {
+    case Constraint::Op::Lt: return "<";
+    case Constraint::Op::Le: return "<=";
+    case Constraint::Op::Gt: return ">";
+    case Constraint::Op::Ge: return ">=";
+    case Constraint::Op::Ne: return "!=";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<AssumptionItem> parse_assumptions(const std::string& text, const SourcePos& origin) {
+  std::vector<AssumptionItem> out;
+  auto fail = [&](std::size_t at, const std::string& msg, int len = 1) {
+    throw InputError(advance(origin, at), msg, len, text);
+  };
+  // split at top-level commas ([0, 1] and (0, pi) contain commas)
+  std::vector<std::pair<std::size_t, std::size_t>> items;
+  int depth = 0;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    char c = i < text.size() ? text[i] : ',';
+    if (c == '(' || c == '[') ++depth;
+    else if (c == ')' || c == ']') --depth;
+    if (c == ',' && depth <= 0) {
+      std::size_t b = from, e = i;
+      trim(text, b, e);
+      if (b < e) items.push_back({b, e});
+      else if (i < text.size() || !items.empty()) fail(b, "expected an assumption (e.g. 'm1 > 0', 'v1 real', 'e in [0,1]')");
+      from = i + 1;
+      depth = 0;
+    }
+  }
+  for (auto [b, e] : items) {
+    std::string item = text.substr(b, e - b);
+    // a relation?
+    std::size_t op_at = std::string::npos, op_len = 0;
+    Constraint::Op op = Constraint::Op::Gt;
+    int d = 0;
+    for (std::size_t i = 0; i < item.size(); ++i) {
+      char c = item[i];
+      if (c == '(') ++d;
+      else if (c == ')') --d;
+      if (d != 0) continue;
+      char n = i + 1 < item.size() ? item[i + 1] : '\0';
+      std::size_t len = 0;
+      Constraint::Op o = Constraint::Op::Gt;
+      if (c == '<' && n == '=') len = 2, o = Constraint::Op::Le;
+      else if (c == '>' && n == '=') len = 2, o = Constraint::Op::Ge;
+      else if (c == '!' && n == '=') len = 2, o = Constraint::Op::Ne;
+      else if (c == '<') len = 1, o = Constraint::Op::Lt;
+      else if (c == '>') len = 1, o = Constraint::Op::Gt;
+      else if (c == '=') fail(b + i, "'=' is not an assumption; expected <, <=, >, >=, != or a domain ('x real', 'x in [0,1]')");
+      if (len) {
+        if (op_at != std::string::npos) fail(b + i, "expected one comparison per assumption; separate them with ','", static_cast<int>(len));
+        op_at = i;
+        op_len = len;
+        op = o;
+        i += len - 1;
+      }
+    }
+    AssumptionItem a;
+    a.pos = advance(origin, b);
+    a.text = item;
+    if (op_at != std::string::npos) {
+      std::size_t lb = 0, le = op_at, rb = op_at + op_len, re = item.size();
+      trim(item, lb, le);
+      trim(item, rb, re);
+      if (lb >= le) fail(b + op_at, std::string("expected an expression before '") + op_text(op) + "'");
+      if (rb >= re) fail(b + op_at, std::string("expected an expression after '") + op_text(op) + "'");
+      try {
+        a.lhs = parse_expression(std::string_view(item).substr(lb, le - lb), advance(origin, b + lb));
+        a.rhs = parse_expression(std::string_view(item).substr(rb, re - rb), advance(origin, b + rb));
+      } catch (const InputError& err) {
+        throw quoted(err, text);
+      }
+      a.op = op;
+      bool zero = a.rhs.kind == NodeKind::Number && a.rhs.text == "0";
+      if (a.lhs.kind == NodeKind::Symbol && zero && op != Constraint::Op::Ne && op != Constraint::Op::Le) {
+        a.name = a.lhs.text;
+        a.domain = op == Constraint::Op::Gt ? Domain::positive()
+                   : op == Constraint::Op::Ge ? Domain::nonnegative()
+                                              : Domain::negative();
+      } else {
+        a.is_constraint = true;
+      }
+      out.push_back(std::move(a));
+      continue;
+    }
+    // NAME DOMAIN
+    std::size_t i = 0;
+    if (!ident_start(item[0])) fail(b, "expected a symbol name at the start of the assumption '" + item + "'");
+    while (i < item.size() && ident_char(item[i])) ++i;
+    a.name = item.substr(0, i);
+    std::size_t db = i, de = item.size();
+    trim(item, db, de);
+    if (db >= de)
+      fail(b + i, "expected a domain after '" + a.name + "': real, positive, nonnegative, negative or 'in [a, b]'");
+    try {
+      a.domain = parse_domain(item.substr(db, de - db), advance(origin, b + db));
+    } catch (const InputError& err) {
+      throw quoted(err, text);
+    }
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<std::string, DomainAt>& domains,
+                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos) {
+  SymbolTable table;
+  std::vector<std::string> order;
+  auto add = [&](const std::string& name) {
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+  };
+  auto collect = [&](const Node& n) {
+    std::vector<const Node*> ids;
+    collect_identifiers(n, ids);
+    for (const Node* id : ids)
+      if (id->kind == NodeKind::Symbol && !is_reserved_name(id->text)) add(id->text);
+  };
+  for (const Node* e : exprs) collect(*e);
+  for (const auto& it : items)
+    if (it.is_constraint) {
+      collect(it.lhs);
+      collect(it.rhs);
+    }
+  for (const auto& [name, d] : domains) add(name);
+  for (const auto& name : order) {
+    SymbolInfo info;
+    info.name = name;
+    auto it = domains.find(name);
+    if (it != domains.end()) {
+      info.domain = it->second.domain;
+      info.pos = it->second.pos;
+    }
+    table.declare(std::move(info));
+  }
+  for (const auto& it : items) {
+    if (!it.is_constraint) continue;
+    Constraint c;
+    c.lhs = to_ginac(it.lhs, table);
+    c.rhs = to_ginac(it.rhs, table);
+    c.op = it.op;
+    c.text = it.text;
+    c.pos = it.pos;
+    require_possible_assumption(c, static_cast<int>(it.text.size()));
+    table.add_constraint(std::move(c));
+  }
+  Satisfiability sat = decide_satisfiable(table);
+  if (sat.status != Satisfiability::Status::Satisfiable) throw InputError(assume_pos, unsatisfiable_message(sat));
+  return table;
+}
+
+namespace {
+
+// Side conditions of both sides, as written, deduplicated by their text.
+std::vector<SideCondition> side_conditions_of_sides(std::initializer_list<const Node*> sides, const SymbolTable& t) {
+  std::vector<SideCondition> out;
+  for (const Node* n : sides)
+    for (auto& sc : side_conditions_of_tree(*n, t)) {
+      bool dup = false;
+      for (const auto& o : out) dup = dup || o.what == sc.what;
+      if (!dup) out.push_back(sc);
+    }
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+std::map<std::string, DomainAt> domain_map(const std::vector<AssumptionItem>& items, const std::string& text) {
+  std::map<std::string, DomainAt> out;
+  for (const auto& it : items) {
+    if (it.is_constraint) continue;
+    auto prev = out.find(it.name);
+    if (prev != out.end()) {
+      if (prev->second.domain.to_string() == it.domain.to_string()) continue;
+      throw InputError(it.pos,
+                       "conflicting assumptions for '" + it.name + "': " + prev->second.domain.to_string() + " and " +
+                           it.domain.to_string(),
+                       static_cast<int>(it.text.size()), text);
+    }
+    out[it.name] = {it.domain, it.pos};
+  }
+  return out;
+}
+
+}  // namespace
+
+Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::string& assume,
+                    const ProveOptions& opt) {
+  calculus::install();
+  SourcePos lo{"<lhs>", 1, 1}, ro{"<rhs>", 1, 1}, ao{"<assume>", 1, 1};
+  Node l, r;
+  try {
+    l = parse_expression(lhs, lo);
+  } catch (const InputError& e) {
+    throw quoted(e, lhs);
+  }
+  try {
+    r = parse_expression(rhs, ro);
+  } catch (const InputError& e) {
+    throw quoted(e, rhs);
+  }
+  std::vector<AssumptionItem> items = parse_assumptions(assume, ao);
+  auto domains = domain_map(items, assume);
+  SymbolTable table;
+  try {
+    table = claim_table({&l, &r}, domains, items, ao);
+  } catch (const InputError& e) {
+    throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
+  }
+  std::optional<Verdict> iv;
+  try {
+    iv = integral_equality(l, r, table, opt);
+  } catch (const InputError& e) {
+    throw quoted(e, e.pos().file == "<lhs>" ? lhs : rhs);
+  }
+  if (iv) {
+    const Node& closed = l.kind == NodeKind::Call && l.text == "integral" ? r : l;
+    if (iv->kind != VerdictKind::Undecided || iv->method != "integral") {
+      iv->side_conditions = side_conditions_of_sides({&closed}, table);
+      require_defined_on_domain(*iv);
+    }
+    return *iv;
+  }
+  ex a, b;
+  try {
+    try {
+      a = to_ginac(l, table);
+    } catch (const InputError& e) {
+      throw quoted(e, lhs);
+    }
+    try {
+      b = to_ginac(r, table);
+    } catch (const InputError& e) {
+      throw quoted(e, rhs);
+    }
+  } catch (const UndecidedLimit& e) {
+    // A limit the helper cannot evaluate is not bad input: the claim is undecided.
+    Verdict v;
+    v.kind = VerdictKind::Undecided;
+    v.method = "limit";
+    v.reason = e.what();
+    return v;
+  }
+  Verdict v = prove_equal(a, b, table, opt);
+  v.side_conditions = side_conditions_of_sides({&l, &r}, table);
+  require_defined_on_domain(v);
+  return v;
+}
+
+// --- the claim bank ----------------------------------------------------------------------
+
+namespace {
+
+struct LineError {
+  std::string message;
+};
+
+// The file name given to positions inside a claim's "assume" field.
+const char* const kAssumeField = "<assume field>";
+
+class ClaimLine {
+ public:
+  ClaimLine(const nlohmann::json& j, int line_no, const std::string& file, const ProveOptions& opt)
+      : j_(j), line_(line_no), file_(file), opt_(opt) {}
+
+  Verdict run(const std::string& kind) {
+    std::vector<std::string> fields{"lhs", "rhs"};
+    if (kind == "limit" || kind == "antiderivative" || kind == "series_first_order" || kind == "series" ||
+        kind == "solves_ode")
+      fields.push_back("var");
+    if (kind == "solves_ode") fields.push_back("solution");
+    std::map<std::string, Node> nodes;
+    for (const auto& f : fields) nodes[f] = expr(f);
+    if (kind == "limit" || kind == "series_first_order" || kind == "series") point_node_ = point();
+    // symbols: identifiers of all expressions; y, yp, ypp for ODEs
+    std::map<std::string, DomainAt> domains = assumptions();
+    std::vector<AssumptionItem> items = assume_items(domains);
+    std::vector<const Node*> exprs;
+    for (auto& [k, n] : nodes) (void)k, exprs.push_back(&n);
+    if (big_o_) exprs.push_back(&*big_o_);
+    if (point_node_ && !point_infinite_) exprs.push_back(&*point_node_);
+    std::vector<Node> initial_nodes;
+    if (kind == "solves_ode") initial_nodes = initial_values();
+    for (const auto& n : initial_nodes) exprs.push_back(&n);
+    try {
+      table_ = claim_table(exprs, domains, items, SourcePos{file_, line_, 1});
+    } catch (const InputError& e) {
+      if (e.pos().file == kAssumeField)
+        throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+      throw LineError{"in 'assumptions': " + e.message()};
+    }
+    auto conv = [&](const std::string& f) -> ex {
+      try {
+        return to_ginac(nodes.at(f), table_);
+      } catch (const InputError& e) {
+        throw LineError{"in field '" + f + "' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+      }
+      // an UndecidedLimit (a limit that does not exist or is infinite, an integral without a
+      // value) is no bad input: run()'s caller makes the claim undecided with the reason
+    };
+    if (kind == "equal") {
+      std::optional<Verdict> iv;
+      try {
+        iv = integral_equality(nodes.at("lhs"), nodes.at("rhs"), table_, opt_);
+      } catch (const InputError& e) {
+        throw LineError{"in the integral: " + e.message()};
+      }
+      if (iv) return *iv;
+    }
+    ex lhs = conv("lhs"), rhs = conv("rhs");
+    if (kind == "equal") {
+      Verdict v = prove_equal(lhs, rhs, table_, opt_);
+      v.side_conditions = side_conditions_of_sides({&nodes.at("lhs"), &nodes.at("rhs")}, table_);
+      require_defined_on_domain(v);
+      return v;
+    }
+    ex var = conv("var");
+    if (!GiNaC::is_a<GiNaC::symbol>(var)) throw LineError{"field 'var' must be a symbol name"};
+    const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(var);
+    if (kind == "antiderivative") {
+      // d rhs / d var = lhs
+      Verdict v = prove_equal(rhs.diff(x), lhs, table_, opt_);
+      v.method = "d/d" + x.get_name() + " of rhs + " + v.method;
+      v.side_conditions = side_conditions_of_sides({&nodes.at("rhs")}, table_);
+      require_antiderivative_defined(v, lhs, x.get_name(), table_);
+      return v;
+    }
+    if (kind == "limit") {
+      ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+      int dir = limit_direction();
+      LimitResult L = compute_limit(lhs, x, p, point_infinite_, dir, table_);
+      const std::string numeric = L.confirmed_numerically ? ", confirmed numerically" : "";
+      if (L.does_not_exist) {
+        Verdict v;
+        v.method = "limit (" + L.method + numeric + ")";
+        v.kind = rhs_undefined_ ? VerdictKind::Proved : VerdictKind::Refuted;
+        v.detail = L.reason;
+        if (!rhs_undefined_) {
+          v.lhs_value = "undefined";
+          v.rhs_value = j_.at("rhs").get<std::string>();
+        }
+        return v;
+      }
+      if (!L.ok) {
+        Verdict v;
+        v.kind = VerdictKind::Undecided;
+        v.method = "limit";
+        v.reason = L.reason;
+        return v;
+      }
+      std::string how = "limit (" + L.method + numeric + ")";
+      if (rhs_undefined_) {
+        Verdict v;
+        v.method = how;
+        v.kind = VerdictKind::Refuted;
+        v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
+        v.rhs_value = "undefined";
+        v.detail = "the limit exists: it is " + v.lhs_value;
+        return v;
+      }
+      if (L.infinite != 0 || rhs_infinite_ != 0) {
+        Verdict v;
+        v.method = how;
+        if (L.infinite == rhs_infinite_) v.kind = VerdictKind::Proved;
+        else {
+          v.kind = VerdictKind::Refuted;
+          v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
+          v.rhs_value = j_.at("rhs").get<std::string>();
+          v.detail = "the limit is " + v.lhs_value;
+        }
+        return v;
+      }
+      Verdict v = prove_equal(L.value, rhs, table_, opt_);
+      v.method = how + " + " + v.method;
+      return v;
+    }
+    if (kind == "series") {
+      // lhs - rhs = O((var - point)^order) as var -> point (from "dir"): big_o.hpp.
+      ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+      if (j_.contains("order") && !j_.at("order").is_number_integer())
+        throw LineError{"field 'order' must be an integer (lhs - rhs = O((var - point)^order))"};
+      if (!j_.contains("order") && !big_o_)
+        throw LineError{"a series claim needs an integer field 'order' (lhs - rhs = O((var - point)^order)) or an "
+                        "order term in the rhs ('x - x^3/6 + O(x^5)')"};
+      long long order = j_.contains("order") ? j_.at("order").get<long long>() : 0;
+      if (big_o_) {
+        int from_term = order_of_big_o(x, p);
+        if (j_.contains("order") && from_term != order)
+          throw LineError{"field 'order' is " + std::to_string(order) + " but the rhs ends in O(" + to_text(*big_o_) +
+                          "), order " + std::to_string(from_term)};
+        order = from_term;
+      }
+      if (order < -1000 || order > 1000) throw LineError{"field 'order' must be between -1000 and 1000"};
+      int dir = limit_direction();
+      if (point_infinite_ && dir != 0) throw LineError{"field 'dir' goes with a finite point"};
+      return remainder_is_big_o(lhs - rhs, x, p, point_infinite_, dir, static_cast<int>(order), table_);
+    }
+    if (kind == "series_first_order") {
+      ex p = to_ginac(*point_node_, table_);
+      std::string why;
+      auto s = series_first_order(lhs, x, p, &why, &table_);
+      if (!s) {
+        Verdict v;
+        v.kind = VerdictKind::Undecided;
+        v.method = "series";
+        v.reason = why.empty() ? "the series expansion failed" : why;
+        return v;
+      }
+      Verdict v = prove_equal(*s, rhs, table_, opt_);
+      v.method = "series (first order) + " + v.method;
+      return v;
+    }
+    // solves_ode: the ODE lhs = rhs in y, yp, ypp; the claimed solution; initial values.
+    ex sol = conv("solution");
+    GiNaC::exmap m;
+    const char* names[] = {"y", "yp", "ypp"};
+    ex d = sol;
+    for (int k = 0; k < 3; ++k) {
+      if (const SymbolInfo* info = table_.find(names[k])) {
+        if (sol.has(info->sym)) throw LineError{std::string("the solution must not contain '") + names[k] + "'"};
+        m[info->sym] = d;
+      }
+      d = d.diff(x);
+    }
+    Verdict v = prove_equal(lhs.subs(m), rhs.subs(m), table_, opt_);
+    v.method = "ODE residual + " + v.method;
+    if (!v.holds()) return v;
+    std::vector<std::string> methods{v.method};
+    for (std::size_t i = 0; i < initial_nodes.size() / 2; ++i) {
+      ex at = to_ginac(initial_nodes[2 * i], table_);
+      ex value = to_ginac(initial_nodes[2 * i + 1], table_);
+      ex s = sol;
+      for (int k = 0; k < initial_orders_[i]; ++k) s = s.diff(x);
+      Verdict iv = prove_equal(s.subs(x == at), value, table_, opt_);
+      if (!iv.holds()) {
+        iv.method = "initial condition " + std::to_string(i + 1) + " + " + iv.method;
+        return iv;
+      }
+    }
+    if (!initial_nodes.empty()) v.method += ", initial conditions";
+    v.side_conditions = side_conditions_of_sides({&nodes.at("solution")}, table_);
+    require_solution_without_singularities(v, x.get_name());
+    return v;
+  }
+
+ private:
+  const nlohmann::json& j_;
+  int line_;
+  std::string file_;
+  const ProveOptions& opt_;
+  SymbolTable table_;
+  std::optional<Node> point_node_;
+  std::optional<Node> big_o_;   // series: the argument of an O(...) term taken off the rhs
+  int point_infinite_ = 0;
+  int rhs_infinite_ = 0;
+  bool rhs_undefined_ = false;   // limit: "rhs": "undefined" (the limit does not exist)
+  std::vector<int> initial_orders_;
+
+  std::string text_field(const std::string& f, const nlohmann::json& j) {
+    if (!j.contains(f)) throw LineError{"missing field '" + f + "'"};
+    const auto& v = j.at(f);
+    if (v.is_string()) return v.get<std::string>();
+    if (v.is_number()) return v.dump();
+    throw LineError{"field '" + f + "' must be a string"};
+  }
+
+  Node parse_field(const std::string& f, const std::string& text) {
+    try {
+      return parse_expression(text, SourcePos{file_, line_, 1});
+    } catch (const InputError& e) {
+      throw LineError{"in field '" + f + "' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+    }
+  }
+
+  Node expr(const std::string& f) {
+    std::string t = text_field(f, j_);
+    if (f == "rhs" && j_.value("kind", "") == "limit") {
+      if (t == "oo" || t == "+oo" || t == "-oo") {
+        rhs_infinite_ = t == "-oo" ? -1 : 1;
+        return parse_field(f, "0");
+      }
+      if (t == "undefined") {
+        rhs_undefined_ = true;
+        return parse_field(f, "0");
+      }
+    }
+    Node n = parse_field(f, t);
+    if (f == "rhs" && j_.value("kind", "") == "series") n = strip_big_o(n);
+    return n;
+  }
+
+  // series: a right-hand side may end in its order term, `x - x^3/6 + O(x^5)`, as other systems
+  // print it; the term is taken off and gives the order (checked against "order" if given).
+  Node strip_big_o(const Node& n) {
+    Node rest, arg;
+    if (!split_order_term(n, rest, arg)) return n;
+    big_o_ = arg;
+    return rest;
+  }
+
+  // The order N of an O(...) term: O((x - p)^N), O(x^N) at p = 0, O(x^-N) at infinity.
+  int order_of_big_o(const GiNaC::symbol& x, const ex& p) {
+    std::string why;
+    std::optional<int> n = order_of_term(to_ginac(*big_o_, table_), x, p, point_infinite_, &why);
+    if (!n) throw LineError{why + ", got O(" + to_text(*big_o_) + ")"};
+    return *n;
+  }
+
+  // limit: "dir": "+" (from above), "-" (from below); absent or "+-": two-sided.
+  int limit_direction() {
+    if (!j_.contains("dir")) return 0;
+    std::string t = text_field("dir", j_);
+    if (t == "+") return 1;
+    if (t == "-") return -1;
+    if (t == "+-" || t.empty()) return 0;
+    throw LineError{"field 'dir' must be \"+\" (from above), \"-\" (from below) or \"+-\" (two-sided), got '" + t +
+                    "'"};
+  }
+
+  std::optional<Node> point() {
+    std::string t = text_field("point", j_);
+    if (t == "oo" || t == "+oo") { point_infinite_ = 1; return parse_field("point", "0"); }
+    if (t == "-oo") { point_infinite_ = -1; return parse_field("point", "0"); }
+    return parse_field("point", t);
+  }
+
+  std::map<std::string, DomainAt> assumptions() {
+    std::map<std::string, DomainAt> out;
+    if (!j_.contains("assumptions")) return out;
+    const auto& a = j_.at("assumptions");
+    if (!a.is_object()) throw LineError{"field 'assumptions' must be an object {\"name\": \"domain\"}"};
+    for (auto it = a.begin(); it != a.end(); ++it) {
+      if (!it.value().is_string()) throw LineError{"assumption '" + it.key() + "' must be a string domain"};
+      bool ok = !it.key().empty() && ident_start(it.key()[0]);
+      for (char c : it.key()) ok = ok && ident_char(c);
+      if (!ok || is_reserved_name(it.key())) throw LineError{"assumption key '" + it.key() + "' is not a symbol name"};
+      try {
+        out[it.key()] = {parse_domain(it.value().get<std::string>(), SourcePos{file_, line_, 1}), {file_, line_, 1}};
+      } catch (const InputError& e) {
+        throw LineError{"in assumption '" + it.key() + "': " + e.message()};
+      }
+    }
+    return out;
+  }
+
+  // The optional field "assume": an assumption list as for `equal --assume` (domains such as
+  // "x > 0", "e in [0, 1]" and relations such as "x > 1000000", "v1 > v2"). Its domains join
+  // those of "assumptions" (a symbol given two different domains is an error); positions in its
+  // errors are columns inside the field.
+  std::vector<AssumptionItem> assume_items(std::map<std::string, DomainAt>& domains) {
+    if (!j_.contains("assume")) return {};
+    if (!j_.at("assume").is_string()) throw LineError{"field 'assume' must be a string such as \"x > 0, v1 > v2\""};
+    std::string text = j_.at("assume").get<std::string>();
+    std::vector<AssumptionItem> items;
+    try {
+      items = parse_assumptions(text, SourcePos{kAssumeField, line_, 1});
+    } catch (const InputError& e) {
+      throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+    }
+    for (const auto& it : items) {
+      if (it.is_constraint) continue;
+      auto prev = domains.find(it.name);
+      if (prev != domains.end() && prev->second.domain.to_string() != it.domain.to_string())
+        throw LineError{"in field 'assume' (column " + std::to_string(it.pos.col) + "): conflicting assumptions for '" +
+                        it.name + "': " + prev->second.domain.to_string() + " and " + it.domain.to_string()};
+      domains[it.name] = {it.domain, it.pos};
+    }
+    return items;
+  }
+
+  std::vector<Node> initial_values() {
+    std::vector<Node> out;
+    if (!j_.contains("initial")) return out;
+    const auto& a = j_.at("initial");
+    if (!a.is_array()) throw LineError{"field 'initial' must be a list of {\"at\", \"order\", \"value\"}"};
+    for (const auto& c : a) {
+      if (!c.is_object()) throw LineError{"each initial condition must be an object {\"at\", \"order\", \"value\"}"};
+      int order = 0;
+      if (c.contains("order")) {
+        if (!c.at("order").is_number_integer() || c.at("order").get<int>() < 0 || c.at("order").get<int>() > 1)
+          throw LineError{"'order' of an initial condition must be 0 or 1"};
+        order = c.at("order").get<int>();
+      }
+      initial_orders_.push_back(order);
+      out.push_back(parse_field("initial.at", text_field("at", c)));
+      out.push_back(parse_field("initial.value", text_field("value", c)));
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+nlohmann::ordered_json claim_line_error(int line_no, const std::string& file, const std::string& message,
+                                        const nlohmann::json* id) {
+  nlohmann::ordered_json out;
+  if (id) out["id"] = *id;
+  out["line"] = line_no;
+  out["verdict"] = "error";
+  out["error"] = file + ":" + std::to_string(line_no) + ": error: " + message;
+  return out;
+}
+
+nlohmann::ordered_json claim_line_undecided(const std::string& line, int line_no, const std::string& method,
+                                            const std::string& reason) {
+  nlohmann::ordered_json out;
+  // Only the id and the kind are read back from the line (it was valid enough to be tried).
+  nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+  if (j.is_object() && j.contains("id")) out["id"] = j.at("id");
+  out["line"] = line_no;
+  if (j.is_object() && j.contains("kind") && j.at("kind").is_string()) out["kind"] = j.at("kind");
+  Verdict v;
+  v.kind = VerdictKind::Undecided;
+  v.method = method;
+  v.reason = reason;
+  nlohmann::ordered_json vj = verdict_json(v);
+  for (auto& [k, val] : vj.items()) out[k] = val;
+  return out;
+}
+
+namespace {
+
+// The line with every byte that is not valid UTF-8 replaced by U+FFFD.
+std::string replace_invalid_utf8(std::string_view s) {
+  std::string out;
+  while (!s.empty()) {
+    std::size_t bad = invalid_utf8_at(s);
+    if (bad == std::string_view::npos) {
+      out += s;
+      break;
+    }
+    out += s.substr(0, bad);
+    out += "\xEF\xBF\xBD";
+    s.remove_prefix(bad + 1);
+  }
+  return out;
+}
+
+char hex_digit(int v) { return static_cast<char>(v < 10 ? '0' + v : 'A' + v - 10); }
+
+}  // namespace
+
+nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
+                                        const ProveOptions& opt) {
+  calculus::install();
+  nlohmann::ordered_json out;
+  auto t0 = std::chrono::steady_clock::now();
+  nlohmann::json j;
+  auto error = [&](const std::string& msg) {
+    out["line"] = line_no;
+    out["verdict"] = "error";
+    out["error"] = file + ":" + std::to_string(line_no) + ": error: " + msg;
+    return out;
+  };
+  // JSON is UTF-8: a line that is not is an error (named by its id when the rest of the line
+  // still reads as a claim), and the other lines go on.
+  if (std::size_t bad = invalid_utf8_at(line); bad != std::string::npos) {
+    unsigned char b = static_cast<unsigned char>(line[bad]);
+    std::string msg = "invalid UTF-8 at column " + std::to_string(bad + 1) + " (byte 0x" + hex_digit(b >> 4) +
+                      hex_digit(b & 15) + "); a claim bank must be UTF-8 text";
+    nlohmann::json guess = nlohmann::json::parse(replace_invalid_utf8(line), nullptr, false);
+    if (guess.is_object() && guess.contains("id")) return claim_line_error(line_no, file, msg, &guess.at("id"));
+    return claim_line_error(line_no, file, msg);
+  }
+  try {
+    j = nlohmann::json::parse(line);
+  } catch (const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    // "[json.exception.parse_error.101] parse error at line 1, column 5: ..." -> keep the part
+    // after the library's tag
+    auto p = what.find("] ");
+    return error("malformed JSON: " + (p == std::string::npos ? what : what.substr(p + 2)));
+  }
+  if (!j.is_object()) return error("expected a JSON object per line");
+  if (j.contains("id")) out["id"] = j.at("id");
+  out["line"] = line_no;
+  if (!j.contains("kind"))
+    return error("missing field 'kind' (one of equal, limit, series, antiderivative, series_first_order, solves_ode)");
+  if (!j.at("kind").is_string())
+    return error("field 'kind' must be a string (one of equal, limit, series, antiderivative, series_first_order, solves_ode)");
+  std::string kind = j.at("kind").get<std::string>();
+  static const std::vector<std::string> kinds{"equal", "limit", "series", "antiderivative", "series_first_order",
+                                              "solves_ode"};
+  if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
+    return error("unknown kind '" + kind + "'; expected one of equal, limit, series, antiderivative, series_first_order, solves_ode");
+  out["kind"] = kind;
+  Verdict v;
+  try {
+    ClaimLine c(j, line_no, file, opt);
+    v = c.run(kind);
+  } catch (const LineError& e) {
+    return error(e.message);
+  } catch (const InputError& e) {
+    return error(e.message());
+  } catch (const UndecidedLimit& e) {
+    // a well-formed line whose limit or integral has no usable value (it does not exist, is
+    // infinite, or no method evaluates it): undecided with that reason
+    v = Verdict{};
+    v.kind = VerdictKind::Undecided;
+    v.method = "limit";
+    v.reason = e.what();
+  } catch (const std::exception& e) {
+    // The line is well formed (its errors are LineError / InputError above): a library failure
+    // inside the computation leaves the claim undecided, with what failed, not an input error.
+    v = Verdict{};
+    v.kind = VerdictKind::Undecided;
+    v.method = "internal";
+    v.reason = std::string("a symbolic computation failed: ") + e.what();
+  }
+  nlohmann::ordered_json vj = verdict_json(v);
+  for (auto& [k, val] : vj.items()) out[k] = val;
+  out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+}  // namespace dc

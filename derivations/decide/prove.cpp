@@ -1,0 +1,635 @@
+// prove_equal: the cascade that decides whether two expressions are equal (see prove.hpp).
+#include "derivations/decide/prove.hpp"
+
+#include <cctype>
+
+#include <algorithm>
+#include <functional>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/symbolic/inspect.hpp"
+#include "derivations/kernel/range.hpp"
+#include "derivations/kernel/sample.hpp"
+#include "derivations/kernel/ball.hpp"
+#include "derivations/kernel/probe.hpp"
+
+namespace dc {
+
+using GiNaC::ex;
+using GiNaC::numeric;
+
+// ------------------------------------------------------------------ stage 2: transcendental
+
+namespace {
+
+bool is_fn(const ex& e, const char* name) {
+  return GiNaC::is_exactly_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name() == name;
+}
+
+// log of a positive rational as a sum over prime logs: log(6) -> log(2) + log(3), so constant
+// log identities reduce to zero. Only for moderate integers (trial division up to 1e6).
+ex log_of_positive_rational(const numeric& q) {
+  if (q == 1) return 0;
+  auto split_int = [](numeric n, ex& acc, int sign) -> bool {
+    if (n > numeric("1000000000000")) return false;
+    long v = n.to_long();
+    ex part = 0;
+    for (long p = 2; p * p <= v; ++p) {
+      int k = 0;
+      while (v % p == 0) {
+        v /= p;
+        ++k;
+      }
+      if (k) part += k * GiNaC::log(ex(p));
+    }
+    if (v > 1) part += GiNaC::log(ex(v));
+    acc += sign * part;
+    return true;
+  };
+  ex acc = 0;
+  if (!split_int(q.numer(), acc, 1) || !split_int(q.denom(), acc, -1)) return GiNaC::log(ex(q));
+  return acc;
+}
+
+ex log_split(const ex& a, const SymbolTable& ctx);
+
+// log(a) for a that is not a product: powers of positive bases, exp(real), positive rationals.
+ex log_atom(const ex& a, const SymbolTable& ctx) {
+  if (GiNaC::is_a<numeric>(a)) {
+    const numeric& q = GiNaC::ex_to<numeric>(a);
+    if (q.is_rational() && q.is_positive()) return log_of_positive_rational(q);
+    return GiNaC::log(a);
+  }
+  if (GiNaC::is_a<GiNaC::power>(a)) {
+    // log(b^x) = x log(b) for b > 0 and real x
+    if (detail::provably_positive(a.op(0), ctx) && detail::provably_real(a.op(1), ctx))
+      return a.op(1) * log_split(a.op(0), ctx);
+    return GiNaC::log(a);
+  }
+  if (is_fn(a, "exp") && detail::provably_real(a.op(0), ctx)) return a.op(0);
+  return GiNaC::log(a);
+}
+
+// log(p * r) = log(p) + log(r) whenever p > 0 (the argument of p*r is that of r), so every
+// provably positive factor is split off, whatever the sign of the rest.
+ex log_split(const ex& a, const SymbolTable& ctx) {
+  if (!GiNaC::is_a<GiNaC::mul>(a)) return log_atom(a, ctx);
+  ex sum = 0, rest = 1;
+  bool split = false;
+  for (std::size_t i = 0; i < a.nops(); ++i) {
+    const ex& f = a.op(i);
+    bool pos = false;
+    if (GiNaC::is_a<GiNaC::power>(f))
+      pos = detail::provably_positive(f.op(0), ctx) && detail::provably_real(f.op(1), ctx);
+    else
+      pos = detail::provably_positive(f, ctx);
+    if (pos) {
+      sum += log_atom(f, ctx);
+      split = true;
+    } else {
+      rest *= f;
+    }
+  }
+  if (!split) return GiNaC::log(a);
+  if (!rest.is_equal(1)) sum += GiNaC::log(rest);
+  return sum;
+}
+
+struct TranscendentalRewrite : GiNaC::map_function {
+  const SymbolTable& ctx;
+  explicit TranscendentalRewrite(const SymbolTable& c) : ctx(c) {}
+  ex operator()(const ex& e) override {
+    if (e.nops() == 0) return e;
+    ex m = e.map(*this);
+    if (is_fn(m, "log")) return log_split(m.op(0), ctx);
+    if (is_fn(m, "exp")) {
+      // exp(sum) = prod exp(term); exp(c*log(y)) = y^c (GiNaC defines y^c as exp(c log y)).
+      ex arg = GiNaC::expand(m.op(0));
+      ex terms = GiNaC::is_a<GiNaC::add>(arg) ? arg : GiNaC::lst{arg};
+      ex prod = 1;
+      for (std::size_t i = 0; i < terms.nops(); ++i) {
+        const ex& t = terms.op(i);
+        if (is_fn(t, "log")) {
+          prod *= t.op(0);
+        } else if (GiNaC::is_a<GiNaC::mul>(t) && t.nops() == 2 && GiNaC::is_a<numeric>(t.op(1)) &&
+                   is_fn(t.op(0), "log")) {
+          prod *= GiNaC::pow(t.op(0).op(0), t.op(1));
+        } else if (GiNaC::is_a<GiNaC::mul>(t) && t.nops() == 2 && GiNaC::is_a<numeric>(t.op(0)) &&
+                   is_fn(t.op(1), "log")) {
+          prod *= GiNaC::pow(t.op(1).op(0), t.op(0));
+        } else {
+          prod *= GiNaC::exp(t);
+        }
+      }
+      return prod;
+    }
+    return m;
+  }
+};
+
+bool has_function_or_root(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e)) return true;
+  if (GiNaC::is_a<GiNaC::power>(e) && !e.op(1).info(GiNaC::info_flags::integer)) return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_function_or_root(e.op(i))) return true;
+  return false;
+}
+
+bool has_trig(const ex& e) {
+  if (GiNaC::is_a<GiNaC::function>(e)) {
+    std::string n = GiNaC::ex_to<GiNaC::function>(e).get_name();
+    if (n == "sin" || n == "cos" || n == "tan" || n == "sinh" || n == "cosh" || n == "tanh") return true;
+  }
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_trig(e.op(i))) return true;
+  return false;
+}
+
+// sin^2 = 1 - cos^2, sinh^2 = cosh^2 - 1, tan = sin/cos, tanh = sinh/cosh.
+ex apply_side_relations(const ex& e) {
+  ex w = GiNaC::wild(0);
+  ex s = e.subs(GiNaC::lst{GiNaC::tan(w) == GiNaC::sin(w) / GiNaC::cos(w),
+                           GiNaC::tanh(w) == GiNaC::sinh(w) / GiNaC::cosh(w)});
+  s = GiNaC::expand(s);
+  s = s.subs(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2), GiNaC::subs_options::algebraic);
+  s = s.subs(GiNaC::pow(GiNaC::sinh(w), 2) == GiNaC::pow(GiNaC::cosh(w), 2) - 1, GiNaC::subs_options::algebraic);
+  return GiNaC::normal(GiNaC::expand(s));
+}
+
+// ------------------------------------------------------------------ conditions for real values
+
+enum class CondKind { Nonzero, Positive, Nonnegative, UnitInterval };
+
+struct RawCond {
+  CondKind kind;
+  ex arg;
+  std::string reason;
+};
+
+void collect_conditions(const ex& e, std::vector<RawCond>& out) {
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out);
+  if (GiNaC::is_a<GiNaC::power>(e)) {
+    const ex& b = e.op(0);
+    const ex& x = e.op(1);
+    if (GiNaC::is_a<numeric>(b)) {
+      // constants such as sqrt(2) or 1/2 need nothing
+      return;
+    }
+    if (GiNaC::is_a<numeric>(x)) {
+      const numeric& n = GiNaC::ex_to<numeric>(x);
+      if (n.is_integer()) {
+        if (n.is_negative()) out.push_back({CondKind::Nonzero, b, "divisor"});
+        return;
+      }
+      std::string why = (n.denom() == 2) ? "sqrt argument" : "fractional power base";
+      out.push_back({n.is_negative() ? CondKind::Positive : CondKind::Nonnegative, b,
+                     n.is_negative() ? why + " (divisor)" : why});
+      return;
+    }
+    out.push_back({CondKind::Positive, b, "power base"});
+    return;
+  }
+  if (is_fn(e, "log")) out.push_back({CondKind::Positive, e.op(0), "log argument"});
+  // tan(u) = sin(u)/cos(u): a pole where cos(u) = 0 (constants such as tan(1) need nothing)
+  if (is_fn(e, "tan") && !GiNaC::is_a<numeric>(e.op(0).evalf())) out.push_back({CondKind::Nonzero, GiNaC::cos(e.op(0)), "tan pole"});
+  if (is_fn(e, "acos")) out.push_back({CondKind::UnitInterval, e.op(0), "acos argument"});
+  if (is_fn(e, "asin")) out.push_back({CondKind::UnitInterval, e.op(0), "asin argument"});
+}
+
+}  // namespace
+
+// ------------------------------------------------------------------ the cascade
+
+std::string sci(double x) {
+  std::ostringstream os;
+  os.precision(2);
+  os << std::scientific << x;
+  return os.str();
+}
+
+namespace {
+
+// How many distinct denominators (powers with a negative exponent) `e` has, counting stops
+// above `cap`.
+std::size_t distinct_denominators(const ex& e, std::size_t cap) {
+  GiNaC::exset seen;
+  std::vector<ex> stack{e};
+  while (!stack.empty() && seen.size() <= cap) {
+    ex x = stack.back();
+    stack.pop_back();
+    if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative()) {
+      seen.insert(x.op(0));
+      continue;
+    }
+    for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+  }
+  return seen.size();
+}
+
+Verdict cascade(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  Verdict v;
+  ex diff = lhs - rhs;
+  double est = estimate_expanded_terms(lhs) + estimate_expanded_terms(rhs);
+  if (est > static_cast<double>(opt.max_terms)) {
+    // Too big to expand: the symbolic stages are skipped, the kernel's probe (which evaluates
+    // the sides as written) still decides where it can.
+    std::ostringstream os;
+    os << "expansion would exceed " << sci(static_cast<double>(opt.max_terms)) << " terms (estimated " << sci(est)
+       << "), so the symbolic stages were skipped";
+    if (opt.numeric) {
+      Verdict p = kernel::probe(lhs, rhs, ctx, opt, "(not expanded)");
+      if (p.kind != VerdictKind::Undecided) return p;
+      p.reason = os.str() + "; " + p.reason;
+      p.detail = p.reason;
+      return p;
+    }
+    v.kind = VerdictKind::Undecided;
+    v.method = "normal";
+    v.reason = "resource limit: " + os.str();
+    v.detail = v.reason;
+    return v;
+  }
+  // normal() of a sum over many distinct denominators brings them to one (quadratic or worse
+  // in their number: 300 terms 1/(x+i) take about a minute). A false claim of that shape is
+  // refuted by the kernel's probe first, which costs one evaluation per point.
+  if (opt.symbolic && opt.numeric && distinct_denominators(diff, 40) > 40) {
+    Verdict p = kernel::probe(lhs, rhs, ctx, opt, "(not normalised yet)");
+    if (p.kind == VerdictKind::Refuted) return p;
+  }
+  std::string residual;
+  std::string last_method = "normal";
+  if (opt.symbolic) {
+    try {
+      // 1. exact symbolic
+      ex n = GiNaC::normal(diff);
+      if (n.is_zero()) {
+        v.kind = VerdictKind::Proved;
+        v.method = "normal";
+        v.detail = "normal(lhs - rhs) = 0";
+        return v;
+      }
+      ex current = n;
+      // 2. transcendental rules (log of products/powers of positive factors, exp of sums)
+      if (has_function_or_root(n)) {
+        last_method = "expand (transcendental)";
+        TranscendentalRewrite rw(ctx);
+        ex t = rw(diff);
+        if (estimate_expanded_terms(t) <= static_cast<double>(opt.max_terms)) {
+          t = GiNaC::expand(t, GiNaC::expand_options::expand_transcendental);
+          t = GiNaC::normal(rw(t));
+          if (t.is_zero()) {
+            v.kind = VerdictKind::Proved;
+            v.method = "expand (transcendental)";
+            v.detail = "log/exp rules on positive factors, then normal(lhs - rhs) = 0";
+            return v;
+          }
+          current = t;
+          // 3. side relations
+          if (has_trig(t)) {
+            last_method = "side relations";
+            ex s = apply_side_relations(t);
+            if (s.is_zero()) {
+              v.kind = VerdictKind::Proved;
+              v.method = "side relations";
+              v.detail = "sin^2 = 1 - cos^2 (and tan = sin/cos), then normal(lhs - rhs) = 0";
+              return v;
+            }
+          }
+        }
+      }
+      residual = detail::residual_text(current, ctx);
+    } catch (const std::exception& e) {
+      residual = print_text(diff, ctx);
+    }
+  } else {
+    residual = print_text(diff, ctx);
+  }
+  if (opt.numeric) return kernel::probe(lhs, rhs, ctx, opt, residual);
+  v.kind = VerdictKind::Undecided;
+  v.method = last_method;
+  v.residual = residual;
+  v.reason = opt.symbolic ? "the symbolic stages leave a nonzero residual and the numeric probe is off"
+                          : "both the symbolic stages and the numeric probe are off";
+  v.detail = v.reason + "; residual: " + residual;
+  return v;
+}
+
+// For a claim refuted at a point where some real symbols are negative: would it hold if they
+// were declared positive? Returns "holds if a, b > 0: declare a, b positive", or "".
+std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt,
+                             const Verdict& refuted) {
+  bool negative_real = false;   // the counterexample uses a negative value of a real symbol
+  for (const auto& [name, value] : refuted.point) {
+    const SymbolInfo* info = ctx.find(name);
+    negative_real = negative_real || (info && !info->is_function && info->domain.kind == Domain::Kind::Real &&
+                                      value.rfind('-', 0) == 0);
+  }
+  if (!negative_real) return "";
+  // try every real symbol of the claim positive, not only the negative ones of this point
+  std::vector<std::string> names;
+  for (const auto& s : detail::ordered_symbols(lhs - rhs, ctx)) {
+    const SymbolInfo* info = ctx.find(GiNaC::ex_to<GiNaC::symbol>(s));
+    if (info && info->domain.kind == Domain::Kind::Real) names.push_back(info->name);
+  }
+  SymbolTable narrowed = ctx;
+  for (const auto& n : names) narrowed.narrow_domain(n, Domain::positive());
+  if (!kernel::probe(lhs, rhs, narrowed, opt, "").holds()) return "";
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i ? ", " : "") + names[i];
+  return "holds if " + list + (names.size() > 1 ? " are" : " is") + " positive: declare " + list + " positive";
+}
+
+}  // namespace
+
+void require_defined_on_domain(Verdict& v) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status != SideCondition::Status::Violated) continue;
+    v.kind = VerdictKind::Refuted;
+    v.method += " + side condition";
+    v.points = 0;   // the agreeing points of the verdict it replaces are not evidence here
+    v.point = sc.point;
+    v.lhs_value.clear();
+    v.rhs_value.clear();
+    v.detail = "not defined on the whole declared domain: " + sc.what + " (" + sc.reason + ") " + sc.evidence +
+               "; restrict the declarations or add an assumption";
+    return;
+  }
+}
+
+void require_antiderivative_defined(Verdict& v, const GiNaC::ex& integrand, const std::string& var,
+                                    const SymbolTable& ctx) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status == SideCondition::Status::Guaranteed) continue;
+    if (sc.status == SideCondition::Status::Violated && !sc.point.empty()) {
+      // the claimed antiderivative is undefined at this point of the domain: if the integrand
+      // is defined there, the claim is false at that point
+      GiNaC::exmap at;
+      for (const auto& [name, value] : sc.point)
+        if (const SymbolInfo* info = ctx.find(name)) at[info->sym] = GiNaC::numeric(value.c_str());
+      DigitsGuard g(30);
+      const GiNaC::ex f = integrand.subs(at).evalf();
+      if (GiNaC::is_a<GiNaC::numeric>(f) && GiNaC::ex_to<GiNaC::numeric>(f).is_real()) {
+        v.kind = VerdictKind::Refuted;
+        v.method += " + side condition";
+        v.points = 0;
+        v.point = sc.point;
+        v.lhs_value = detail::format_number(GiNaC::ex_to<GiNaC::numeric>(f));
+        v.rhs_value = "undefined";
+        v.detail = "the claimed antiderivative is not defined at a point of the declared domain where the integrand is: " +
+                   sc.what + " (" + sc.reason + ") " + sc.evidence + "; restrict the declarations or use a form defined there";
+        return;
+      }
+    }
+    if (!names_symbol(sc.what, var)) continue;
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the claimed antiderivative may be undefined or jump inside the domain of " + var + " (" + sc.what +
+               ", " + sc.reason + ", " +
+               (sc.status == SideCondition::Status::Violated
+                    ? (sc.evidence.rfind("fails", 0) == 0 ? sc.evidence : "fails " + sc.evidence)
+                    : "is not guaranteed by the declarations") +
+               "): its derivative matching the integrand proves it only where it is defined and continuous; "
+               "restrict the domain or add an assumption";
+    v.detail = v.reason;
+    return;
+  }
+}
+
+void require_solution_without_singularities(Verdict& v, const std::string& var) {
+  if (!v.holds()) return;
+  for (const SideCondition& sc : v.side_conditions) {
+    if (sc.status == SideCondition::Status::Guaranteed) continue;
+    // A condition on a declared function's values (log(mr(t)/m0) with mr declared positive,
+    // which the domains do not reach) is the author's: declared functions are taken to be
+    // smooth, as in the continuity test of integrals.
+    if (sc.evidence.find("abstract function") != std::string::npos) continue;
+    if (!names_symbol(sc.what, var)) continue;
+    v.kind = VerdictKind::Undecided;
+    v.reason = "the claimed solution may be singular inside the domain (" + sc.what + ", " + sc.reason + ", " +
+               (sc.status == SideCondition::Status::Violated ? "fails " + sc.evidence : "is not guaranteed by the declarations") +
+               "): the residual and the initial values prove it only up to the "
+               "first singularity, and a closed form can jump there (atan(1/" + var + ") + atan(" + var +
+               ") has derivative 0 but is not constant); restrict the domain or add an assumption";
+    v.detail = v.reason;
+    return;
+  }
+}
+
+Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  Verdict v = cascade(lhs, rhs, ctx, opt);
+  if (v.kind == VerdictKind::Refuted && opt.numeric) {
+    std::string hint = declaration_hint(lhs, rhs, ctx, opt, v);
+    v.hint = hint;
+  }
+  if (v.kind != VerdictKind::Proved || !opt.numeric) return v;
+  // Proved symbolically: re-witness numerically. A contradiction is a bug in a symbolic stage
+  // (or a rewrite used outside its domain): never shown as proved.
+  std::string contra = kernel::witness_contradiction(lhs, rhs, ctx, opt);
+  if (contra.empty()) return v;
+  Verdict u;
+  u.kind = VerdictKind::Undecided;
+  u.method = v.method;
+  u.reason = "internal error: the symbolic proof (" + v.method + ") is contradicted by the numeric witness " + contra +
+             "; please report this";
+  u.detail = u.reason;
+  return u;
+}
+
+Verdict prove_zero(const ex& e, const SymbolTable& ctx, const ProveOptions& opt) {
+  return prove_equal(e, 0, ctx, opt);
+}
+
+// ------------------------------------------------------------------ side conditions
+
+namespace {
+
+std::string condition_text(CondKind k, const ex& a, const SymbolTable& ctx) {
+  switch (k) {
+    case CondKind::Nonzero: {
+      return print_text_up_to_sign(a, ctx) + " != 0";
+    }
+    case CondKind::Positive: return print_text(a, ctx) + " > 0";
+    case CondKind::Nonnegative: return print_text(a, ctx) + " >= 0";
+    case CondKind::UnitInterval: return "-1 <= " + print_text(a, ctx) + " <= 1";
+  }
+  return "";
+}
+
+std::string domains_text(const ex& a, const SymbolTable& ctx) {
+  std::string s;
+  for (const auto& sym : detail::ordered_symbols(a, ctx)) {
+    if (!s.empty()) s += ", ";
+    s += GiNaC::ex_to<GiNaC::symbol>(sym).get_name() + " " + detail::domain_of(sym, ctx).to_string();
+  }
+  return s.empty() ? "a constant" : s;
+}
+
+// Does an assumed constraint give the condition? (arg equals +-(lhs - rhs) of an assumption)
+// Does the constraint c fix the sign that condition k needs of a? True when a is the
+// constraint's difference lhs - rhs times a factor of evident sign (-g*(r2 - y2) from y2 > r2).
+bool constraint_implies(CondKind k, const ex& a, const Constraint& c, const SymbolTable& ctx) {
+  ex cd = c.lhs - c.rhs;
+  bool same = false, opposite = false;
+  try {
+    same = GiNaC::normal(a - cd).is_zero();
+    opposite = !same && GiNaC::normal(a + cd).is_zero();
+    if (!same && !opposite && !cd.is_zero()) {
+      ex q = GiNaC::normal(a / cd);
+      same = detail::provably_positive(q, ctx);
+      opposite = !same && detail::provably_positive(-q, ctx);
+    }
+  } catch (const std::exception&) {
+    return false;
+  }
+  if (!same && !opposite) return false;
+  using Op = Constraint::Op;
+  // sign of cd implied by the constraint
+  bool pos = c.op == Op::Gt, neg = c.op == Op::Lt, nonneg = c.op == Op::Ge || c.op == Op::Gt,
+       nonpos = c.op == Op::Le || c.op == Op::Lt, nz = c.op == Op::Ne || pos || neg;
+  if (opposite) {
+    std::swap(pos, neg);
+    std::swap(nonneg, nonpos);
+  }
+  switch (k) {
+    case CondKind::Nonzero: return nz;
+    case CondKind::Positive: return pos;
+    case CondKind::Nonnegative: return nonneg;
+    case CondKind::UnitInterval: return false;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) {
+  std::vector<RawCond> raw;
+  collect_conditions(e, raw);
+  std::map<std::string, SideCondition> by_text;  // sorted, deduplicated: deterministic order
+  for (const RawCond& rc : raw) {
+    SideCondition sc;
+    sc.what = condition_text(rc.kind, rc.arg, ctx);
+    sc.reason = rc.reason;
+    if (by_text.count(sc.what)) continue;
+    detail::Range range = detail::range_of(rc.arg, ctx);
+    bool guaranteed = false;
+    switch (rc.kind) {
+      case CondKind::Nonzero: guaranteed = detail::provably_nonzero(rc.arg, ctx); break;
+      case CondKind::Positive: guaranteed = detail::provably_positive(rc.arg, ctx); break;
+      case CondKind::Nonnegative: guaranteed = range.nonnegative() || detail::provably_positive(rc.arg, ctx); break;
+      case CondKind::UnitInterval: guaranteed = range.within(-1, 1); break;
+    }
+    if (guaranteed) {
+      sc.status = SideCondition::Status::Guaranteed;
+      sc.evidence = "follows from the domains: " + domains_text(rc.arg, ctx);
+      by_text[sc.what] = sc;
+      continue;
+    }
+    for (const Constraint& c : ctx.constraints())
+      if (constraint_implies(rc.kind, rc.arg, c, ctx)) {
+        sc.status = SideCondition::Status::Guaranteed;
+        sc.evidence = "assumed: " + c.text;
+        guaranteed = true;
+        break;
+      }
+    if (guaranteed) {
+      by_text[sc.what] = sc;
+      continue;
+    }
+    if (detail::has_abstract_application(rc.arg)) {
+      sc.status = SideCondition::Status::Unknown;
+      sc.evidence = "depends on an abstract function; not implied by the domains";
+      by_text[sc.what] = sc;
+      continue;
+    }
+    // Look for an admissible point that breaks it.
+    detail::PointSampler sampler({rc.arg}, ctx);
+    detail::Rng rng(20261121 ^ detail::hash_text(sc.what, 7));
+    int tested = 0;
+    bool violated = false;
+    for (int attempt = 0; attempt < 60 && tested < 16 && !violated; ++attempt) {
+      bool adm = false;
+      GiNaC::exmap p = sampler.draw(rng, attempt >= 30, &adm);
+      if (!adm) continue;
+      const ex& val = rc.arg;
+      // The argument's sign at the point, certified by ball arithmetic (an argument that is
+      // itself not real breaks an inner condition, which reports it).
+      kernel::Ball b = kernel::enclose_sign_at(val, &p);
+      if (b.status != kernel::BallStatus::Value) continue;
+      ++tested;
+      bool bad = false;
+      std::string value_text = b.text(20);
+      switch (rc.kind) {
+        case CondKind::Nonzero: bad = b.exact_zero(); break;
+        case CondKind::Positive: bad = b.negative() || b.exact_zero(); break;
+        case CondKind::Nonnegative: bad = b.negative(); break;
+        case CondKind::UnitInterval: bad = kernel::enclose_sign_at(GiNaC::abs(val) - 1, &p).positive(); break;
+      }
+      if (bad) {
+        violated = true;
+        sc.status = SideCondition::Status::Violated;
+        sc.point = sampler.describe(p);
+        sc.evidence = "fails at " + detail::join_point(sc.point) + " (value " + value_text + ")";
+      }
+    }
+    if (!violated) {
+      sc.status = SideCondition::Status::Unknown;
+      sc.evidence = "not implied by the domains (" + domains_text(rc.arg, ctx) + "); held at " +
+                    std::to_string(tested) + " sampled points";
+    }
+    by_text[sc.what] = sc;
+  }
+  std::vector<SideCondition> out;
+  for (auto& [k, sc] : by_text) out.push_back(sc);
+  return out;
+}
+
+// check_satisfiable lives in satisfiable.cpp.
+
+std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx, const std::string& free_of) {
+  GiNaC::lst parts;
+  std::function<void(const Node&)> walk;
+  std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
+    if (m.kind == NodeKind::Symbol && m.text == x) return true;
+    for (const auto& a : m.args)
+      if (mentions(a, x)) return true;
+    return false;
+  };
+  // Inside limit(f, x, p) and integral(f, x, a, b) the variable is bound: x ranges near p or
+  // over (a, b), not over the domain declared for the quantity x. Only the parts of f free of x
+  // carry conditions of the claim (the limit engine and the integral's methods answer for the
+  // rest); the point and the limits of integration carry their own.
+  std::function<void(const Node&, const std::string&)> free_parts = [&](const Node& m, const std::string& x) {
+    if (!mentions(m, x)) return walk(m);
+    for (const auto& a : m.args) free_parts(a, x);
+  };
+  walk = [&](const Node& m) {
+    const bool binds = m.kind == NodeKind::Call && ((m.text == "limit" && m.args.size() == 3) ||
+                                                    (m.text == "integral" && m.args.size() == 4)) &&
+                       m.args[1].kind == NodeKind::Symbol;
+    if (binds) {
+      for (std::size_t i = 2; i < m.args.size(); ++i) {
+        const Node& a = m.args[i].kind == NodeKind::Neg ? m.args[i].args[0] : m.args[i];
+        if (!(a.kind == NodeKind::Symbol && a.text == "oo")) walk(m.args[i]);
+      }
+      return free_parts(m.args[0], m.args[1].text);
+    }
+    for (const auto& a : m.args) walk(a);
+    bool calculus = m.kind == NodeKind::Call && (m.text == "integral" || m.text == "diff" || m.text == "limit");
+    if (calculus || !(m.kind == NodeKind::Call || m.kind == NodeKind::Pow || m.kind == NodeKind::Div)) return;
+    try {
+      parts.append(to_ginac(m, ctx));
+    } catch (const std::exception&) {
+      // reported where the expression is used
+    }
+  };
+  if (free_of.empty()) walk(n);
+  else free_parts(n, free_of);
+  return side_conditions(parts, ctx);
+}
+
+}  // namespace dc

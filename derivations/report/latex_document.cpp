@@ -1,0 +1,387 @@
+// LaTeX documents (see latex.hpp): sections, the author's text and the equations between it.
+//
+// Layout: each file is a section; its headings, paragraphs, remarks and figure placeholders
+// (Derivation::prose) stand where the author put them, and the steps between two pieces of
+// text share one `align` display, every chain aligned on its first '=' (latex_rows breaks long
+// chains and sums). An erratum step stands in an equation of its own (a footnote mark inside
+// `align` would be counted twice). With `annotate`, every step gets its own display followed
+// by a small line with its label, rule and verdict, and its notes; hidden and stable steps are
+// shown there too.
+#include <algorithm>
+#include <stdexcept>
+
+#include "derivations/report/latex.hpp"
+#include "derivations/rules/check.hpp"
+
+namespace dc {
+namespace {
+
+std::string basename_of(const std::string& path) {
+  auto s = path.find_last_of('/');
+  return s == std::string::npos ? path : path.substr(s + 1);
+}
+
+// What the handout shows for a step: a `by limit x -> p` step without `of` states
+// "f = L" meaning "f -> L as x -> p", so its first side is shown as the limit it means.
+Relation with_order_term(const Step& s, const Relation& claim);
+
+Relation displayed_claim(const Step& s, const Relation& claim_in) {
+  const Relation claim = with_order_term(s, claim_in);
+  if (s.rule.name != "limit" || !s.rule.into.empty() || claim.sides.size() < 2 || !s.rule.var || !s.rule.point)
+    return claim;
+  const Node& f = claim.sides[0];
+  if (f.kind == NodeKind::Call && f.text == "limit") return claim;
+  Relation shown = claim;
+  Node lim;
+  lim.kind = NodeKind::Call;
+  lim.text = "limit";
+  lim.pos = f.pos;
+  lim.args = {f, s.rule.var->value, s.rule.point->value};
+  if (s.rule.dir != 0) {
+    Node side;
+    side.kind = NodeKind::Symbol;
+    side.text = s.rule.dir > 0 ? "+" : "-";
+    lim.args.push_back(side);
+  }
+  shown.sides[0] = std::move(lim);
+  return shown;
+}
+
+// A series step's order term, taken off the claim by the reader, is printed where it was written.
+Relation with_order_term(const Step& s, const Relation& claim) {
+  if (!s.order_term || claim.sides.empty()) return claim;
+  Relation shown = claim;
+  Node o;
+  o.kind = NodeKind::Call;
+  o.text = "O";
+  o.pos = s.order_term->pos;
+  o.args = {*s.order_term};
+  Node& last = shown.sides.back();
+  if (last.kind == NodeKind::Number && last.text == "0") {
+    last = o;
+  } else {
+    Node sum;
+    sum.kind = NodeKind::Add;
+    sum.pos = last.pos;
+    sum.args = {last, o};
+    last = std::move(sum);
+  }
+  return shown;
+}
+
+std::string verdict_text(const StepResult& r) {
+  if (r.premise && r.verdict.holds()) return "$\\bullet$ premise";
+  std::string s;
+  switch (r.verdict.kind) {
+    case VerdictKind::Proved:
+    case VerdictKind::HoldsNumerically: s = "$\\checkmark$ "; break;
+    case VerdictKind::Refuted: s = "$\\times$ "; break;
+    case VerdictKind::Undecided: s = "? "; break;
+  }
+  s += verdict_words(r.verdict.kind);
+  if (!r.verdict.method.empty()) s += " (" + latex_escape_text(r.verdict.method) + ")";
+  return s;
+}
+
+std::string rule_text(const Step& s) {
+  if (!s.rule.text.empty()) {
+    std::string t = s.rule.text;
+    if (t.rfind("by ", 0) == 0) t = t.substr(3);
+    return t;
+  }
+  return s.rule.written_name.empty() ? s.rule.name : s.rule.written_name;
+}
+
+std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& table, const LatexStyle& style) {
+  std::string out;
+  for (const auto& p : pieces) {
+    switch (p.kind) {
+      case ProsePiece::Kind::Text: out += latex_escape_text(p.text); break;
+      case ProsePiece::Kind::Emph: out += "\\emph{" + latex_escape_text(p.text) + "}"; break;
+      case ProsePiece::Kind::Math: out += "$" + p.text + "$"; break;
+      case ProsePiece::Kind::Expr: {
+        out += "$" + latex_expression(p.expr, table, style);
+        for (const auto& side : p.more) out += " = " + latex_expression(side, table, style);
+        out += "$";
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+class DocumentWriter {
+ public:
+  explicit DocumentWriter(const LatexOptions& o) : opt_(o) {}
+
+  std::string section(const Derivation& d, const CheckSummary* checks) {
+    std::string out;
+    file_ = basename_of(d.source.name);
+    std::string heading = d.title.empty() ? file_ : d.title;
+    bool numbered_title = !heading.empty() && (std::isdigit(static_cast<unsigned char>(heading[0])) ||
+                                               heading.rfind("Example", 0) == 0);
+    std::string shown = latex_escape_text(heading);
+    if (!d.section.empty() && !numbered_title) shown = latex_escape_text(d.section) + "\\quad " + shown;
+    out += "% ---- " + file_ + "\n";
+    out += "\\section*{" + shown + "}\n";
+    out += "\\addcontentsline{toc}{section}{" + shown + "}\n\n";
+    if (opt_.units) out += quantities(d);
+    std::vector<const Step*> run;   // consecutive steps of one display
+    auto flush = [&] {
+      if (!run.empty()) out += display(d, run);
+      run.clear();
+    };
+    std::size_t next_prose = 0;
+    auto prose_before = [&](std::size_t step_index) {
+      while (next_prose < d.prose.size() && d.prose[next_prose].before_step <= step_index) {
+        flush();
+        out += prose(d.prose[next_prose++], d.symbols, style_of(d));
+      }
+    };
+    for (std::size_t i = 0; i < d.steps.size(); ++i) {
+      prose_before(i);
+      const Step& s = d.steps[i];
+      const StepResult* r = checks && i < checks->results.size() ? &checks->results[i] : nullptr;
+      // Stable rewrites (for computing) and hidden helper steps are not handout equations;
+      // --annotate shows them with the rest.
+      if ((s.stable_of || s.hidden) && !opt_.annotate) continue;
+      bool unchecked = opt_.mark_unchecked && r && !step_checked_ok(*r);
+      if (opt_.annotate || s.erratum) {
+        flush();
+        out += single(d, s, r);
+        continue;
+      }
+      if (unchecked) {
+        flush();
+        out += single(d, s, r);
+        continue;
+      }
+      run.push_back(&s);
+    }
+    prose_before(d.steps.size());
+    flush();
+    return out;
+  }
+
+  // "Quantities." with each declared symbol's unit, symbols of one unit together, in
+  // declaration order: $m_1$, $m_2$ in \si{kg}; $v_1$ in \si{m/s}; dimensionless: $e$.
+  static std::string quantities(const Derivation& d) {
+    std::vector<std::pair<std::string, std::vector<std::string>>> groups;   // unit -> TeX names
+    for (const SymbolInfo& s : d.symbols.all()) {
+      if (s.defined_by_step || !s.has_dimension) continue;
+      std::string unit = s.dimension.dimensionless() ? std::string() : siunitx_unit(s.dimension.to_ascii());
+      auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == unit; });
+      if (g == groups.end()) groups.push_back({unit, {}}), g = groups.end() - 1;
+      std::string name = "$" + (s.tex.empty() ? default_tex_name(s.name) : s.tex) + "$";
+      // a function and the symbol standing for its value share a TeX name (m_r(t), m_r): once
+      if (std::find(g->second.begin(), g->second.end(), name) == g->second.end()) g->second.push_back(name);
+    }
+    if (groups.empty()) return {};
+    std::string out = "\\paragraph*{Quantities.}";
+    std::string dimensionless;
+    bool first = true;
+    for (const auto& [unit, names] : groups) {
+      std::string list;
+      for (std::size_t i = 0; i < names.size(); ++i) list += (i ? ", " : "") + names[i];
+      if (unit.empty()) {
+        dimensionless = list;
+        continue;
+      }
+      out += (first ? " " : "; ") + list + " in \\si{" + unit + "}";
+      first = false;
+    }
+    if (!dimensionless.empty()) out += (first ? " dimensionless: " : "; dimensionless: ") + dimensionless;
+    return out + ".\n\n";
+  }
+
+  // "kg*m/s^2" (Dimension::to_ascii) in siunitx's literal form: kg.m/s^{2}; m^(1/2): m^{0.5}.
+  static std::string siunitx_unit(const std::string& ascii) {
+    // the derived units a handout writes (energy and torque share J's dimension)
+    if (ascii == "kg*m^2/s^2") return "J";
+    if (ascii == "kg*m/s^2") return "N";
+    if (ascii == "kg*m^2/s^3") return "W";
+    if (ascii == "kg/(m*s^2)") return "Pa";
+    std::string out;
+    for (std::size_t i = 0; i < ascii.size(); ++i) {
+      char c = ascii[i];
+      if (c == '*') {
+        out += '.';
+      } else if (c == '^') {
+        std::size_t j = i + 1;
+        std::string e;
+        if (j < ascii.size() && ascii[j] == '(') {
+          std::size_t close = ascii.find(')', j);
+          e = ascii.substr(j + 1, close - j - 1);
+          if (e == "1/2") e = "0.5";
+          else if (e == "-1/2") e = "-0.5";
+          else if (e.size() > 2 && e.substr(e.size() - 2) == "/2") e = std::to_string(std::stoi(e.substr(0, e.size() - 2))) + ".5";
+          i = close;
+        } else {
+          while (j < ascii.size() && (std::isdigit(static_cast<unsigned char>(ascii[j])) || ascii[j] == '-')) e += ascii[j++];
+          i = j - 1;
+        }
+        out += "^{" + e + "}";
+      } else {
+        out += c;
+      }
+    }
+    return out;
+  }
+
+  std::string preamble(const std::string& title) {
+    std::string out;
+    out += "% Generated by derivcheck latex. Do not edit: regenerate from the .dc files.\n";
+    out += "\\documentclass[11pt,a4paper]{article}\n";
+    out += "\\usepackage{amsmath,amssymb}\n\\allowdisplaybreaks\n";
+    if (opt_.units) out += "\\usepackage{siunitx}\n";
+    out += "\\usepackage[margin=25mm]{geometry}\n";
+    out += "\\setlength{\\parindent}{0pt}\n\\setlength{\\parskip}{5pt plus 1pt}\n\\setlength{\\jot}{5pt}\n";
+    out += "\\title{" + latex_escape_text(title) + "}\n";
+    out += "\\author{}\n\\date{" + (opt_.subtitle.empty() ? std::string() : latex_escape_text(opt_.subtitle)) + "}\n";
+    out += "\\begin{document}\n\\maketitle\n\n";
+    return out;
+  }
+
+  std::string fragment_header() const {
+    return std::string("% Generated by derivcheck latex --fragment. Needs \\usepackage{amsmath,amssymb}") +
+           (opt_.units ? " and \\usepackage{siunitx}" : "") + " in the host.\n\\begingroup\\allowdisplaybreaks\n\n";
+  }
+  static std::string fragment_footer() { return "\\endgroup\n"; }
+
+ private:
+  const LatexOptions& opt_;
+  std::string file_;
+
+  // Width of a display line in latex_width units: 11pt on 160 mm (standalone), 10pt on
+  // 345 pt (a plain article hosting the fragment). Measured with the overfull-box test.
+  double line_limit() const { return opt_.fragment ? 44 : 58; }
+
+  std::string comment(const Step& s) const {
+    return "% " + s.label + " (" + file_ + ":" + std::to_string(s.pos.line) + ")\n";
+  }
+
+  static LatexStyle style_of(const Derivation& d) {
+    LatexStyle st;
+    st.dot_derivatives = d.dot_derivatives;
+    return st;
+  }
+
+  std::string prose(const Prose& p, const SymbolTable& table, const LatexStyle& style) {
+    switch (p.kind) {
+      case Prose::Kind::Heading: return "\\subsection*{" + prose_tex(p.pieces, table, style) + "}\n\n";
+      case Prose::Kind::Paragraph: return prose_tex(p.pieces, table, style) + "\n\n";
+      case Prose::Kind::Remark: return "\\paragraph*{Remark.} " + prose_tex(p.pieces, table, style) + "\n\n";
+      case Prose::Kind::Figure:
+        return "\\begin{center}\n\\fbox{\\parbox{0.8\\linewidth}{\\centering\\vspace{3ex}"
+               "\\textit{Figure:} " + prose_tex(p.pieces, table, style) + "\\vspace{3ex}}}\n\\end{center}\n\n";
+    }
+    return {};
+  }
+
+  // The rows of a step in an align (tag on its last row).
+  std::string rows(const Derivation& d, const Step& s, const std::string& last_extra = {}) {
+    const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
+    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit(), style_of(d));
+    std::string out;
+    for (std::size_t i = 0; i < rs.size(); ++i) {
+      bool last = i + 1 == rs.size();
+      out += rs[i];
+      if (last) {
+        out += last_extra;
+        out += s.tag.empty() ? " \\notag" : " \\tag{" + latex_escape_text(s.tag) + "}";
+      } else {
+        out += " \\notag \\\\\n";
+      }
+    }
+    return out;
+  }
+
+  // Consecutive steps in one align display.
+  std::string display(const Derivation& d, const std::vector<const Step*>& steps) {
+    std::string out = "\\begin{align}\n";
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+      out += comment(*steps[i]);
+      out += rows(d, *steps[i]);
+      out += i + 1 < steps.size() ? " \\\\\n" : "\n";
+    }
+    return out + "\\end{align}\n\n";
+  }
+
+  // A step on its own: an erratum (footnote), a step marked NOT CHECKED, every annotated step.
+  std::string single(const Derivation& d, const Step& s, const StepResult* r) {
+    std::string extra;
+    if (s.erratum) extra += "\\qquad\\text{(erratum\\footnotemark)}";
+    if (opt_.mark_unchecked && r && !step_checked_ok(*r))
+      extra += "\\qquad\\text{\\textbf{NOT CHECKED: " + latex_escape_text(std::string(to_string(r->verdict.kind))) +
+               (r->verdict.holds() ? " with errors" : "") + "}}";
+    std::string out = comment(s);
+    if (s.erratum) {
+      // equation + aligned: the footnote mark is typeset once
+      const Relation claim = displayed_claim(s, s.erratum->corrected);
+      std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - 12, style_of(d));
+      out += s.tag.empty() ? "\\begin{equation*}\n" : "\\begin{equation}\n";
+      out += "\\begin{aligned}\n";
+      for (std::size_t i = 0; i < rs.size(); ++i) out += rs[i] + (i + 1 < rs.size() ? " \\\\\n" : "\n");
+      out += "\\end{aligned}" + extra;
+      if (!s.tag.empty()) out += "\n\\tag{" + latex_escape_text(s.tag) + "}";
+      out += s.tag.empty() ? "\n\\end{equation*}\n" : "\n\\end{equation}\n";
+      Relation printed = s.claim;
+      std::string text;
+      for (std::size_t i = 0; i < printed.sides.size(); ++i)
+        text += (i ? " = " : "") + latex_expression(printed.sides[i], d.symbols, style_of(d));
+      out += "\\footnotetext{Corrected: the source prints $" + text + "$; " + latex_escape_text(s.erratum->why) +
+             ".}\n";
+    } else {
+      out += "\\begin{align}\n" + rows(d, s, extra) + "\n\\end{align}\n";
+    }
+    if (opt_.annotate) out += annotation(s, r);
+    return out + "\n";
+  }
+
+  // The line under an annotated step: label, rule, verdict; then the step's notes.
+  std::string annotation(const Step& s, const StepResult* r) {
+    std::string a = "{\\footnotesize\\raggedright\\noindent\\texttt{" + latex_escape_text(s.label) + "}: by " +
+                    latex_escape_text(rule_text(s));
+    if (r) a += " \\quad " + verdict_text(*r);
+    if (s.hidden) a += " \\quad (hidden in the handout)";
+    if (s.stable_of) a += " \\quad (stable form, hidden in the handout)";
+    a += "\\par}\n";
+    for (const auto& n : s.notes) a += "{\\footnotesize\\itshape " + latex_escape_text(n) + "\\par}\n";
+    return a;
+  }
+};
+
+}  // namespace
+
+bool step_checked_ok(const StepResult& r) {
+  std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
+  return own == 0 && r.verdict.holds();
+}
+
+std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOptions& opt) {
+  DocumentWriter w(opt);
+  std::vector<const CheckSummary*> checks(ds.size(), nullptr);
+  if ((opt.annotate || opt.mark_unchecked) && opt.checks) {
+    if (opt.checks->size() != ds.size())
+      throw std::invalid_argument("write_latex: one check summary per derivation is needed");
+    checks = *opt.checks;
+  }
+  std::string out;
+  if (opt.fragment) {
+    out += w.fragment_header();
+  } else {
+    std::string title = opt.title;
+    if (title.empty()) title = ds.size() == 1 ? ds[0]->title : "Derivations";
+    out += w.preamble(title);
+  }
+  for (std::size_t i = 0; i < ds.size(); ++i) out += w.section(*ds[i], checks[i]);
+  out += opt.fragment ? w.fragment_footer() : "\\end{document}\n";
+  return out;
+}
+
+std::string write_latex(const Derivation& d, const LatexOptions& opt) {
+  std::vector<const Derivation*> v{&d};
+  return write_latex(v, opt);
+}
+
+}  // namespace dc

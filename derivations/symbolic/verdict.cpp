@@ -1,0 +1,36 @@
+// The spellings and exit codes of verdicts (verdict.hpp).
+#include "derivations/symbolic/verdict.hpp"
+
+namespace dc {
+
+const char* to_string(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved: return "proved";
+    case VerdictKind::HoldsNumerically: return "holds_numerically";
+    case VerdictKind::Refuted: return "refuted";
+    case VerdictKind::Undecided: return "undecided";
+  }
+  return "undecided";
+}
+
+const char* verdict_words(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved: return "proved";
+    case VerdictKind::HoldsNumerically: return "holds numerically";
+    case VerdictKind::Refuted: return "refuted";
+    case VerdictKind::Undecided: return "undecided";
+  }
+  return "undecided";
+}
+
+int exit_code_of(VerdictKind k) {
+  switch (k) {
+    case VerdictKind::Proved:
+    case VerdictKind::HoldsNumerically: return kExitOk;
+    case VerdictKind::Refuted: return kExitRefuted;
+    case VerdictKind::Undecided: return kExitUndecided;
+  }
+  return kExitInternal;
+}
+
+}  // namespace dc
