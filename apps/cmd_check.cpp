@@ -20,7 +20,10 @@ struct CheckOptions {
 int run(const CheckOptions& o) {
   // Every step in a worker process under the budget, on --jobs workers; the report is the same
   // for any number of jobs.
-  std::vector<FileReport> reports = exec::check_files(dc::derivation_files(o.inputs), o.budget.resolve());
+  // Each file is read once, in a child process that carries on with the command (read_once.hpp).
+  exec::RunOptions run = o.budget.resolve();
+  run.read_once = true;
+  std::vector<FileReport> reports = exec::check_files(dc::derivation_files(o.inputs), run);
   ReportOptions ro;
   ro.timings = o.timings;
   ro.quiet = o.quiet;

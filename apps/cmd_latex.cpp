@@ -35,7 +35,9 @@ int run(const LatexCliOptions& o) {
   if (!to_stdout) refuse_output_over_inputs(o.output, files);   // before any work
   // Every step is checked (as `check` does, under the budgets): a handout with a step that does
   // not hold is not emitted unless --allow-unchecked, and then that step is marked in it.
-  std::vector<FileReport> reports = exec::check_files(files, o.budget.resolve());
+  exec::RunOptions run = o.budget.resolve();
+  run.read_once = true;   // each file read once (read_once.hpp)
+  std::vector<FileReport> reports = exec::check_files(files, run);
   std::vector<const Derivation*> ptrs;
   std::vector<const CheckSummary*> checks;
   std::vector<std::string> unchecked;

@@ -12,6 +12,7 @@
 #include "derivations/syntax/io.hpp"
 #include "derivations/exec/pool.hpp"
 #include "derivations/exec/progress.hpp"
+#include "derivations/exec/read_once.hpp"
 #include "derivations/exec/wire.hpp"
 
 namespace dc::exec {
@@ -65,25 +66,41 @@ std::vector<std::optional<InputError>> try_reading(const std::vector<std::string
 
 std::vector<FileReport> check_files(const std::vector<std::string>& files, const RunOptions& opt) {
   std::vector<FileReport> reports(files.size());
-  std::vector<std::optional<InputError>> read_errors = try_reading(files, opt);
   struct StepRef {
     std::uint32_t file, step;
   };
   std::vector<StepRef> steps;
+  if (opt.read_once) {
+    std::vector<ReadFile> read = read_files_once(files, opt.budget);   // from here on, in the reading child
+    for (std::size_t f = 0; f < files.size(); ++f) {
+      reports[f].file = files[f];
+      if (read[f].error) {
+        reports[f].input_error = std::move(*read[f].error);
+        continue;
+      }
+      reports[f].derivation = std::move(read[f].derivation);
+      reports[f].seconds = read[f].seconds;
+    }
+  } else {
+    std::vector<std::optional<InputError>> read_errors = try_reading(files, opt);
+    for (std::size_t f = 0; f < files.size(); ++f) {
+      reports[f].file = files[f];
+      if (read_errors[f]) {
+        reports[f].input_error = *read_errors[f];
+        continue;
+      }
+      auto t0 = std::chrono::steady_clock::now();
+      try {
+        reports[f].derivation.emplace(load_derivation(files[f]));
+      } catch (const InputError& e) {   // the worker read it; a second read should agree
+        reports[f].input_error = e;
+        continue;
+      }
+      reports[f].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    }
+  }
   for (std::size_t f = 0; f < files.size(); ++f) {
-    reports[f].file = files[f];
-    if (read_errors[f]) {
-      reports[f].input_error = *read_errors[f];
-      continue;
-    }
-    auto t0 = std::chrono::steady_clock::now();
-    try {
-      reports[f].derivation.emplace(load_derivation(files[f]));
-    } catch (const InputError& e) {   // the worker read it; a second read should agree
-      reports[f].input_error = e;
-      continue;
-    }
-    reports[f].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!reports[f].derivation) continue;
     for (std::size_t s = 0; s < reports[f].derivation->steps.size(); ++s)
       steps.push_back({static_cast<std::uint32_t>(f), static_cast<std::uint32_t>(s)});
   }

@@ -15,6 +15,11 @@ struct RunOptions {
   int jobs = 1;
   Budget budget;
   bool progress = false;   // a progress line on stderr (the caller checks it is a terminal)
+  // check_files reads each file once, in a child process that then carries on with the command
+  // while this process only supervises it (read_once.hpp; the CLI). Without it, each file is
+  // read in a worker under the budget and again here, and check_files returns in this process
+  // (library callers, tests).
+  bool read_once = false;
   ProveOptions prove;
 };
 

@@ -290,3 +290,32 @@ TEST_CASE("progress: shown on a terminal for a run longer than a second, erased 
   CHECK(ss.str().find("ETA") == std::string::npos);   // the report itself has no progress
   std::remove(out.c_str());
 }
+
+// A file is read once, in a child process that then checks and reports (exec/read_once.hpp);
+// a reading that runs away costs that file only: the supervisor starts a new reader that skips
+// it, and every other file, before and after it, is still read and checked.
+TEST_CASE("time budget: a file whose reading runs away is an input error, the files around it are checked",
+          "[cli][budgets]") {
+  const std::string slow = src("tests/data/runaway/slow_read.dc");
+  const std::string before = src("derivations/handout9/01_momentum_particle.dc");
+  const std::string after = src("derivations/handout9/02_cannon.dc");
+  Run r = run({"check", before, slow, after, "--step-timeout", "300ms"}, 300);
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 2);
+  const std::string all = r.out + r.err;
+  CHECK(all.find("slow_read.dc: error: reading this file did not finish: time budget 0.3 s exceeded; it was not "
+                 "checked") != std::string::npos);
+  CHECK(all.find("01_momentum_particle.dc:") != std::string::npos);
+  CHECK(all.find("02_cannon.dc:") != std::string::npos);
+  CHECK(all.find("1 file with input errors") != std::string::npos);
+  CHECK(all.find(" 0 refuted") != std::string::npos);
+  // every step line of the two readable files is what they give without the slow one
+  Run two = run({"check", before, after, "--step-timeout", "300ms"}, 300);
+  REQUIRE(two.exit_code == 0);
+  const auto lines = cli_test::lines_of(two.out);
+  REQUIRE(lines.size() > 10);
+  for (std::size_t i = 0; i + 1 < lines.size(); ++i) {
+    CAPTURE(lines[i]);
+    CHECK(r.out.find(lines[i] + "\n") != std::string::npos);
+  }
+}
