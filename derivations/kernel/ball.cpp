@@ -517,12 +517,25 @@ Ball enclose_sign_at(const ex& constant, const GiNaC::exmap* point, long start_b
   }
 }
 
-PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, int sig) {
+const std::string& PointComparison::lhs_text() const {
+  if (!lhs_text_) lhs_text_ = lhs_ball ? lhs_ball->text(sig) : std::string();
+  return *lhs_text_;
+}
+
+const std::string& PointComparison::rhs_text() const {
+  if (!rhs_text_) rhs_text_ = rhs_ball ? rhs_ball->text(sig) : std::string();
+  return *rhs_text_;
+}
+
+PointComparison compare_balls(Ball&& lhs, Ball&& rhs, long tol_exponent, int sig) {
   using K = PointComparison::Kind;
   PointComparison out;
+  out.sig = sig;
+  out.lhs_ball = std::make_shared<const Ball>(std::move(lhs));
+  out.rhs_ball = std::make_shared<const Ball>(std::move(rhs));
+  const Ball& l = *out.lhs_ball;
+  const Ball& r = *out.rhs_ball;
   const long prec = std::max(l.prec_bits, r.prec_bits) + 16;
-  out.lhs_text = l.text(sig);
-  out.rhs_text = r.text(sig);
   auto certified_undefined = [](const Ball& b) {
     return b.status == BallStatus::NotReal || b.status == BallStatus::Pole;
   };
@@ -596,9 +609,11 @@ PointComparison compare_balls(const Ball& l, const Ball& r, long tol_exponent, i
     if (differ) {
       out.kind = K::Differ;
       // enough digits to show the difference
-      for (int s = sig; s <= 200 && out.lhs_text == out.rhs_text; s += 10) {
-        out.lhs_text = l.text(s);
-        out.rhs_text = r.text(s);
+      out.lhs_text_ = l.text(sig);
+      out.rhs_text_ = r.text(sig);
+      for (int s = sig + 10; s <= 200 && *out.lhs_text_ == *out.rhs_text_; s += 10) {
+        out.lhs_text_ = l.text(s);
+        out.rhs_text_ = r.text(s);
       }
       return out;
     }
@@ -623,8 +638,9 @@ PointComparison compare_at(const ex& lhs, const ex& rhs, const GiNaC::exmap* poi
   PointComparison out;
   for (long digits = std::max(opt.start_digits, -opt.tol_exponent + 15);; digits *= 4) {
     long prec = std::min(digits_to_bits(digits), opt.max_bits);
-    Ball l = enclose_at(lhs, point, prec), r = enclose_at(rhs, point, prec);
-    out = compare_balls(l, r, opt.tol_exponent, opt.sig);
+    out = compare_balls(enclose_at(lhs, point, prec), enclose_at(rhs, point, prec), opt.tol_exponent, opt.sig);
+    const Ball& l = *out.lhs_ball;
+    const Ball& r = *out.rhs_ball;
     out.digits = prec < opt.max_bits ? digits : bits_to_digits(prec);
     if (out.kind != K::Unknown) return out;
     if (prec >= opt.max_bits) {

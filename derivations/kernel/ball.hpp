@@ -17,6 +17,7 @@
 // exponent), so overflow never turns into agreement.
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <ginac/ginac.h>
@@ -82,10 +83,21 @@ struct PointComparison {
     IsolatedPole,    // a side divides by an exact zero here (x/x at 0): not a counterexample
     Unknown          // the precision cap was reached without a decision
   } kind = Kind::Unknown;
-  std::string lhs_text, rhs_text;   // values (or "not real: log of a negative number")
   double rel_diff = 0;              // Agree: rigorous upper bound; Differ: estimate
   long digits = 0;                  // decimal digits of the precision that decided
   std::string why;                  // Unknown / NeitherReal / IsolatedPole: the reason
+
+  // The two values as decimal text (or "not real: log of a negative number"), `sig` significant
+  // digits; for Differ, as many more as it takes to show the difference. Computed when first
+  // asked for: converting a ball to decimal costs more than comparing it, and most comparisons
+  // (every agreeing sample point) never print their values.
+  const std::string& lhs_text() const;
+  const std::string& rhs_text() const;
+
+  // The enclosures the texts come from.
+  std::shared_ptr<const Ball> lhs_ball, rhs_ball;
+  int sig = 20;
+  mutable std::optional<std::string> lhs_text_, rhs_text_;
 };
 
 struct CompareOptions {
@@ -96,8 +108,9 @@ struct CompareOptions {
 };
 
 // Compare two enclosures at the precision they were computed with (Unknown when they do not
-// decide; the caller may recompute at a higher precision).
-PointComparison compare_balls(const Ball& lhs, const Ball& rhs, long tol_exponent = -30, int sig = 20);
+// decide; the caller may recompute at a higher precision). The comparison keeps the two balls
+// (for its texts).
+PointComparison compare_balls(Ball&& lhs, Ball&& rhs, long tol_exponent = -30, int sig = 20);
 
 // Compare two constant expressions (a sample point already substituted), raising the
 // precision until the comparison is decided or the cap is reached.

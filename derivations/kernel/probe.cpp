@@ -43,16 +43,16 @@ CompareOptions confirmation(const CompareOptions& co) {
 // "lhs = 1.5, rhs = 2.25" / "lhs = 0.4 is real, rhs is not real (log of a negative number)"
 std::string difference_text(const PointComparison& c) {
   using K = PointComparison::Kind;
-  if (c.kind == K::LhsOnly) return "lhs = " + c.lhs_text + " is real, rhs is " + c.rhs_text;
-  if (c.kind == K::RhsOnly) return "rhs = " + c.rhs_text + " is real, lhs is " + c.lhs_text;
-  return "lhs = " + c.lhs_text + ", rhs = " + c.rhs_text;
+  if (c.kind == K::LhsOnly) return "lhs = " + c.lhs_text() + " is real, rhs is " + c.rhs_text();
+  if (c.kind == K::RhsOnly) return "rhs = " + c.rhs_text() + " is real, lhs is " + c.lhs_text();
+  return "lhs = " + c.lhs_text() + ", rhs = " + c.rhs_text();
 }
 
 void set_refuted(Verdict& v, const PointComparison& c) {
   v.kind = VerdictKind::Refuted;
   v.digits = static_cast<int>(c.digits);
-  v.lhs_value = c.lhs_text;
-  v.rhs_value = c.rhs_text;
+  v.lhs_value = c.lhs_text();
+  v.rhs_value = c.rhs_text();
   v.max_rel_diff = c.rel_diff;
 }
 
@@ -150,15 +150,15 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
       v.kind = VerdictKind::HoldsNumerically;
       v.points = 1;
       v.digits = static_cast<int>(c.digits);
-      v.lhs_value = c.lhs_text;
-      v.rhs_value = c.rhs_text;
+      v.lhs_value = c.lhs_text();
+      v.rhs_value = c.rhs_text();
       v.max_rel_diff = c.rel_diff;
       // The bound itself is not printed: its last digits follow GiNaC's term order, which
       // changes between processes. The tolerance it was checked against is deterministic.
       v.false_accept = "constant claim: |lhs - rhs| <= 1e" + std::to_string(tol_exp) +
                        " relative, a rigorous ball-arithmetic bound at " + std::to_string(c.digits) +
                        " digits; only a false identity closer than that could pass";
-      v.detail = "constants agree: " + c.lhs_text + " (difference bounded rigorously below 1e" +
+      v.detail = "constants agree: " + c.lhs_text() + " (difference bounded rigorously below 1e" +
                  std::to_string(tol_exp) + " relative at " + std::to_string(c.digits) + " digits)";
       return v;
     }

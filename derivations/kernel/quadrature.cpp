@@ -210,7 +210,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
         break;
       }
       Ball g = enclose(Gp, prec);
-      c = compare_balls(I, g, std::lround(opt.rel_tol_exponent));
+      c = compare_balls(std::move(I), std::move(g), std::lround(opt.rel_tol_exponent));
       c.digits = prec * 3 / 10;
       if (c.kind != K::Unknown) break;
     }
@@ -223,11 +223,11 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
     for (const auto& [name, value] : sampler.describe(p))
       if (name != "dc_quadrature_dummy") pt.push_back({name, value});
     v.point = pt;
-    v.lhs_value = c.lhs_text;
-    v.rhs_value = c.rhs_text;
+    v.lhs_value = c.lhs_text();
+    v.rhs_value = c.rhs_text();
     v.digits = static_cast<int>(c.digits);
     v.max_rel_diff = c.rel_diff;
-    v.detail = "the integral (rigorous quadrature) = " + c.lhs_text + ", the closed form = " + c.rhs_text;
+    v.detail = "the integral (rigorous quadrature) = " + c.lhs_text() + ", the closed form = " + c.rhs_text();
     return v;
   };
   for (; attempts < need * 20 && agreed < need; ++attempts) {

@@ -104,8 +104,8 @@ std::optional<Verdict> other_root_point(StepContext& c, const Reduction& red, co
   if (pc.kind != K::Differ && pc.kind != K::LhsOnly) return std::nullopt;
   v.kind = VerdictKind::Refuted;
   v.method = "another root";
-  v.lhs_value = pc.lhs_text;
-  v.rhs_value = pc.rhs_text;
+  v.lhs_value = pc.lhs_text();
+  v.rhs_value = pc.rhs_text();
   v.digits = static_cast<int>(pc.digits);
   v.detail = "the equations have another root " + c.text(X) + " = " + c.text(r) + " in the declared domain (" +
              info->name + " " + info->domain.to_string() + "): at " + detail::join_point(v.point) +
