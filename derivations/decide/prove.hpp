@@ -1,4 +1,4 @@
-// prove_equal: the one place that decides whether two expressions are equal.
+// prove_equal: whether two expressions are equal on the declared domain.
 //
 // Cascade (each stage only runs when the previous could not decide):
 //   1. exact symbolic: normal(a - b) == 0                        -> Proved, method "normal"
@@ -6,12 +6,12 @@
 //      exp of sums), then normal                                  -> Proved, "expand (transcendental)"
 //   3. side relations: sin^2+cos^2 = 1 etc. via subs_options::algebraic, then normal
 //                                                                 -> Proved, "side relations"
-//   4. numeric probe: exact random rationals drawn from each symbol's declared domain
-//      (negatives included for real symbols; away from 0, +-1 and integers; rejection of
-//      points violating constraints and of points where either side is undefined / not real),
-//      evaluated with CLN at >= 50 digits (raised to 100 when a difference looks small):
-//        all points agree to the tolerance     -> HoldsNumerically (points, digits, false-accept chance)
-//        one point disagrees (confirmed at higher precision) -> Refuted (point, both values)
+//      A symbolic proof is re-witnessed at a sample point by the kernel (witness_contradiction):
+//      a certified disagreement there means a symbolic stage was wrong, and nothing is proved.
+//   4. the kernel's probe (derivations/kernel/probe.hpp): exact rational points of the declared
+//      domain, both sides enclosed in Arb balls; a certified difference -> Refuted (the point and
+//      both values); every point agreeing within a rigorous bound -> HoldsNumerically (points,
+//      digits, false-accept chance); otherwise Undecided with the reason.
 //   5. otherwise Undecided with residual and reason (e.g. "no valid sample points: the
 //      constraints exclude every point tried", "resource limit: expansion would exceed 1e6 terms").
 // A false claim is never Proved or HoldsNumerically; a true claim is never Refuted.

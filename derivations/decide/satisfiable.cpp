@@ -42,7 +42,7 @@ std::string quoted(const Constraint& c) { return "'" + c.text + "'"; }
 // for sin(1e300)). The rigorous kernel will replace this with ball arithmetic.
 bool evaluation_trustworthy(const ex& e, long digits) {
   // Operands first: evaluating x^(y^z) as a whole when y^z is astronomic asks CLN to round a
-  // float of about 10^(10^12) to an integer (an 855 GB allocation; found by the sanitizer run).
+  // float of about 10^(10^12) to an integer (an 855 GB allocation).
   for (std::size_t i = 0; i < e.nops(); ++i)
     if (!evaluation_trustworthy(e.op(i), digits)) return false;
   if (GiNaC::is_a<GiNaC::function>(e)) {

@@ -240,7 +240,7 @@ class BallEvaluator {
     arb_get_lbound_arf(lo, t.v, prec_);
     arb_get_ubound_arf(hi, t.v, prec_);
     // a wide ball (exp(exp(exp(x))) at a huge x) has ends beyond what an fmpz exponent takes:
-    // arf_get_fmpz aborts on them (found by the published corpus, gr_8_6)
+    // arf_get_fmpz aborts on them
     if (!arf_is_finite(lo) || !arf_is_finite(hi) || arf_cmpabs_2exp_si(lo, kMaxExpBits) > 0 ||
         arf_cmpabs_2exp_si(hi, kMaxExpBits) > 0) {
       arf_clear(lo);

@@ -419,7 +419,7 @@ void check_exact_power(const ex& b, const ex& x) {
   }
   // A float exponent of astronomic size (10^(10^12), from a tower of powers at a sample point):
   // GiNaC asks CLN whether it is an integer by rounding it to one, an exact integer of that many
-  // bits (855 GB; found by the sanitizer run: ASan aborts, a plain build relied on malloc failing).
+  // bits (855 GB).
   if (nx.is_real() && !nx.is_rational()) {
     cln::cl_F f = cln::the<cln::cl_F>(cln::the<cln::cl_R>(nx.to_cl_N()));
     if (!cln::zerop(f) && cln::float_exponent(f) > (1L << 22))

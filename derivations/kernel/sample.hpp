@@ -93,8 +93,8 @@ RealValue eval_real(const GiNaC::ex& e, long digits);
 // e.subs(p) for a point p of exact numbers (no_pattern), refusing what GiNaC would evaluate
 // exactly at an absurd cost: a rational base (not 0, +-1) to a rational exponent so large that
 // the exact power would have more than a million digits. (1 + 1/x)^x at x = 10^8 asks CLN for
-// (1 + 10^-8)^(10^8) exactly, x^(x^12) at x = 10^30 for an exponent of 10^360: both hang
-// (found by fuzz_expr, docs/hardening.md). There it throws std::range_error, which callers
+// (1 + 10^-8)^(10^8) exactly, x^(x^12) at x = 10^30 for an exponent of 10^360: both hang.
+// There it throws std::range_error, which callers
 // treat like a pole: the expression cannot be evaluated at this point. 0^0 and 0^(negative)
 // throw before GiNaC::pow is called (GiNaC leaks the power it allocates when evaluation throws).
 // Where only a value or a sign is needed, kernel::enclose_at evaluates without substituting.

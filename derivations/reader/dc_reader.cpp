@@ -301,7 +301,7 @@ Relation DcReader::relation(const Span& s, std::size_t b, std::size_t e, const s
 // Convert with the table, for validation (undefined symbols, exponent limits, ...).
 // Undeclared symbols, bad calls and other input errors throw here. A limit(...) that the
 // limit engine cannot decide is not an input error: the step that uses it is undecided when
-// it is checked (found by fuzz_reader: the whole file was lost).
+// it is checked, and the rest of the file is read.
 void DcReader::validate(const Node& n) {
   try {
     (void)to_ginac(n, d_.symbols);

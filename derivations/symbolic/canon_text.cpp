@@ -42,7 +42,7 @@ std::string format_number(const numeric& x_in, int sig) {
     cln::cl_F f = cln::the<cln::cl_F>(cln::the<cln::cl_R>(x_in.to_cl_N()));
     // A float far outside 10^-1200..10^1200 (a value that overflowed to 10^(10^18) in the probe)
     // is first scaled by a power of ten in float arithmetic: its exact rational would have as
-    // many digits as its exponent (an allocation of petabytes, found by fuzz_expr).
+    // many digits as its exponent (an allocation of petabytes).
     const long long fe = cln::float_exponent(f);
     if (fe > 4096 || fe < -4096) {
       shift = static_cast<long long>(std::floor(static_cast<double>(fe - 1) * 0.30102999566398119521));

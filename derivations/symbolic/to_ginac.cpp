@@ -359,8 +359,8 @@ class Converter {
       // to work with is bounded by the step's time and memory budgets, not by a cap here.
     }
     // 0^0 and 0^(negative) are refused before GiNaC::pow: GiNaC allocates the power object and
-    // then throws from its evaluation, and that object is never freed (found by LeakSanitizer,
-    // docs/hardening.md). The messages are the ones guarded() gives for GiNaC's exceptions.
+    // then throws from its evaluation, and that object is never freed. The messages are the ones
+    // guarded() gives for GiNaC's exceptions.
     if (base.is_zero() && GiNaC::is_a<GiNaC::numeric>(expo)) {
       const GiNaC::numeric& ne = GiNaC::ex_to<GiNaC::numeric>(expo);
       if (ne.is_zero()) throw InputError(n.pos, "0^0 is undefined", n.length);
