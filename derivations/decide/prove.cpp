@@ -602,14 +602,18 @@ std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTa
   // Inside limit(f, x, p) and integral(f, x, a, b) the variable is bound: x ranges near p or
   // over (a, b), not over the domain declared for the quantity x. Only the parts of f free of x
   // carry conditions of the claim (the limit engine and the integral's methods answer for the
-  // rest); the point and the limits of integration carry their own.
+  // rest); the point and the limits of integration carry their own. The integrand of an
+  // indefinite integral(f, x) is given, not claimed: `integral(f, x) = F` claims dF/dx = f where
+  // f is defined (require_antiderivative_defined answers for F), so its parts in x carry no
+  // condition either (integral(sqrt(x)^2, x) = x^2/2 holds for x real).
   std::function<void(const Node&, const std::string&)> free_parts = [&](const Node& m, const std::string& x) {
     if (!mentions(m, x)) return walk(m);
     for (const auto& a : m.args) free_parts(a, x);
   };
   walk = [&](const Node& m) {
-    const bool binds = m.kind == NodeKind::Call && ((m.text == "limit" && m.args.size() == 3) ||
-                                                    (m.text == "integral" && m.args.size() == 4)) &&
+    const bool binds = m.kind == NodeKind::Call &&
+                       ((m.text == "limit" && m.args.size() == 3) ||
+                        (m.text == "integral" && (m.args.size() == 4 || m.args.size() == 2))) &&
                        m.args[1].kind == NodeKind::Symbol;
     if (binds) {
       for (std::size_t i = 2; i < m.args.size(); ++i) {
