@@ -152,15 +152,20 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
   const std::string derived_text =
       does_not_exist ? "undefined" : value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
 
-  // A side that disagrees with what the helper found (a value, an infinity, or no limit).
+  // The helper's reason for "does not exist" usually says so itself.
+  const std::string dne_detail = dne_reason.find("does not exist") != std::string::npos
+                                     ? dne_reason
+                                     : "the limit does not exist: " + dne_reason;
+  // A side that disagrees with what the helper found (a value, an infinity, or no limit). As
+  // in every comparison below, the left value is the limit (of the claim's first side, or of
+  // A's) and the right value the side as written.
   auto refuted_by_limit = [&](const Node& written) {
     Verdict v;
     v.kind = VerdictKind::Refuted;
     v.method = how;
-    v.detail = does_not_exist ? "the limit does not exist: " + dne_reason
-                              : "the limit is " + derived_text + ", the claim says " + to_text(written);
-    v.lhs_value = to_text(written);
-    v.rhs_value = derived_text;
+    v.detail = does_not_exist ? dne_detail : "the limit is " + derived_text + ", the claim says " + to_text(written);
+    v.lhs_value = derived_text;
+    v.rhs_value = to_text(written);
     return v;
   };
 
@@ -174,7 +179,7 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
       bool says_undefined = !is_infinity(written, sinf);
       bool agrees = says_undefined ? does_not_exist : (!does_not_exist && sinf == value_inf);
       if (agrees) {
-        all.add(proved(how, does_not_exist ? "the limit does not exist: " + dne_reason : std::string()), what);
+        all.add(proved(how, does_not_exist ? dne_detail : std::string()), what);
       } else {
         all.add(refuted_by_limit(written), what);
       }
@@ -198,7 +203,7 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
     }
     Verdict v;
     try {
-      v = prove_equal(to_ginac(n, symbols), value, symbols, c.opt);
+      v = prove_equal(value, to_ginac(n, symbols), symbols, c.opt);
     } catch (const UndecidedLimit& e) {
       v = undecided("limit", e.what());
     }
