@@ -6,9 +6,7 @@
 
 #include "derivations/syntax/io.hpp"
 #include "derivations/calculus/big_o.hpp"
-#include "derivations/calculus/integral_equal.hpp"
-#include "derivations/calculus/limit_entry.hpp"
-#include "derivations/symbolic/printer.hpp"
+#include "derivations/claims/internal/claim_steps.hpp"
 #include "derivations/report/report.hpp"
 #include "derivations/decide/satisfiable.hpp"
 
@@ -150,7 +148,8 @@ std::vector<AssumptionItem> parse_assumptions(const std::string& text, const Sou
 }
 
 SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<std::string, DomainAt>& domains,
-                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos) {
+                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos,
+                        const std::vector<std::pair<std::string, std::string>>& functions) {
   SymbolTable table;
   std::vector<std::string> order;
   auto add = [&](const std::string& name) {
@@ -179,6 +178,14 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
     }
     table.declare(std::move(info));
   }
+  for (const auto& [name, param] : functions) {
+    SymbolInfo info;
+    info.name = name;
+    info.is_function = true;
+    info.params = {param};
+    info.pos = assume_pos;
+    table.declare(std::move(info));
+  }
   for (const auto& it : items) {
     if (!it.is_constraint) continue;
     Constraint c;
@@ -194,22 +201,6 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
   if (sat.status != Satisfiability::Status::Satisfiable) throw InputError(assume_pos, unsatisfiable_message(sat));
   return table;
 }
-
-namespace {
-
-// Side conditions of both sides, as written, deduplicated by their text.
-std::vector<SideCondition> side_conditions_of_sides(std::initializer_list<const Node*> sides, const SymbolTable& t) {
-  std::vector<SideCondition> out;
-  for (const Node* n : sides)
-    for (auto& sc : side_conditions_of_tree(*n, t)) {
-      bool dup = false;
-      for (const auto& o : out) dup = dup || o.what == sc.what;
-      if (!dup) out.push_back(sc);
-    }
-  return out;
-}
-
-}  // namespace
 
 namespace {
 
@@ -255,44 +246,27 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
   } catch (const InputError& e) {
     throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
   }
-  std::optional<Verdict> iv;
-  try {
-    iv = integral_equality(l, r, table, opt);
-  } catch (const InputError& e) {
-    throw quoted(e, e.pos().file == "<lhs>" ? lhs : rhs);
-  }
-  if (iv) {
-    const Node& closed = l.kind == NodeKind::Call && l.text == "integral" ? r : l;
-    if (iv->kind != VerdictKind::Undecided || iv->method != "integral") {
-      iv->side_conditions = side_conditions_of_sides({&closed}, table);
-      require_defined_on_domain(*iv);
-    }
-    return *iv;
-  }
-  ex a, b;
-  try {
-    try {
-      a = to_ginac(l, table);
+  // The claim is the step `lhs = rhs` (claim_steps.hpp), checked by the rule's code.
+  const Derivation d = claims::equal_derivation("<equal>", table, l, r);
+  const StepResult res = claims::check_last_step(d, opt);
+  if (res.errors.empty()) return res.verdict;
+  // The step could not be checked. A side that does not convert is reported at that side, as
+  // its conversion reports it (a limit(...) without a value leaves the claim undecided).
+  auto at_field = [&](const InputError& e) {
+    return quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
+  };
+  if (!claims::contains_integral(l) && !claims::contains_integral(r)) try {
+      for (const Node* side : {&l, &r}) (void)to_ginac(*side, table);
     } catch (const InputError& e) {
-      throw quoted(e, lhs);
+      throw at_field(e);
+    } catch (const UndecidedLimit& e) {
+      Verdict v;
+      v.kind = VerdictKind::Undecided;
+      v.method = "limit";
+      v.reason = e.what();
+      return v;
     }
-    try {
-      b = to_ginac(r, table);
-    } catch (const InputError& e) {
-      throw quoted(e, rhs);
-    }
-  } catch (const UndecidedLimit& e) {
-    // A limit the helper cannot evaluate is not bad input: the claim is undecided.
-    Verdict v;
-    v.kind = VerdictKind::Undecided;
-    v.method = "limit";
-    v.reason = e.what();
-    return v;
-  }
-  Verdict v = prove_equal(a, b, table, opt);
-  v.side_conditions = side_conditions_of_sides({&l, &r}, table);
-  require_defined_on_domain(v);
-  return v;
+  throw at_field(res.errors.front());
 }
 
 // --- the claim bank ----------------------------------------------------------------------
@@ -330,13 +304,17 @@ class ClaimLine {
     std::vector<Node> initial_nodes;
     if (kind == "solves_ode") initial_nodes = initial_values();
     for (const auto& n : initial_nodes) exprs.push_back(&n);
-    try {
-      table_ = claim_table(exprs, domains, items, SourcePos{file_, line_, 1});
-    } catch (const InputError& e) {
-      if (e.pos().file == kAssumeField)
-        throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
-      throw LineError{"in 'assumptions': " + e.message()};
-    }
+    auto table_of = [&](const std::vector<const Node*>& of,
+                        const std::vector<std::pair<std::string, std::string>>& functions) {
+      try {
+        return claim_table(of, domains, items, SourcePos{file_, line_, 1}, functions);
+      } catch (const InputError& e) {
+        if (e.pos().file == kAssumeField)
+          throw LineError{"in field 'assume' (column " + std::to_string(e.pos().col) + "): " + e.message()};
+        throw LineError{"in 'assumptions': " + e.message()};
+      }
+    };
+    table_ = table_of(exprs, {});
     auto conv = [&](const std::string& f) -> ex {
       try {
         return to_ginac(nodes.at(f), table_);
@@ -346,84 +324,37 @@ class ClaimLine {
       // an UndecidedLimit (a limit that does not exist or is infinite, an integral without a
       // value) is no bad input: run()'s caller makes the claim undecided with the reason
     };
+    // From here on the fields are only validated as before (their errors keep their texts);
+    // the claim itself is the one-step derivation of claim_steps.hpp, checked by the rule.
     if (kind == "equal") {
-      std::optional<Verdict> iv;
-      try {
-        iv = integral_equality(nodes.at("lhs"), nodes.at("rhs"), table_, opt_);
-      } catch (const InputError& e) {
-        throw LineError{"in the integral: " + e.message()};
-      }
-      if (iv) return *iv;
+      const Node& l = nodes.at("lhs");
+      const Node& r = nodes.at("rhs");
+      const Derivation d = claims::equal_derivation(file_, table_, l, r);
+      const StepResult res = claims::check_last_step(d, opt_);
+      if (res.errors.empty()) return res.verdict;
+      if (claims::contains_integral(l) || claims::contains_integral(r))
+        throw LineError{"in the integral: " + res.errors.front().message()};
+      // a side that does not convert is reported at its field (a limit(...) without a value
+      // leaves the claim undecided)
+      conv("lhs");
+      conv("rhs");
+      throw LineError{res.errors.front().message()};
     }
-    ex lhs = conv("lhs"), rhs = conv("rhs");
-    if (kind == "equal") {
-      Verdict v = prove_equal(lhs, rhs, table_, opt_);
-      v.side_conditions = side_conditions_of_sides({&nodes.at("lhs"), &nodes.at("rhs")}, table_);
-      require_defined_on_domain(v);
-      return v;
-    }
+    conv("lhs");
+    conv("rhs");
     ex var = conv("var");
     if (!GiNaC::is_a<GiNaC::symbol>(var)) throw LineError{"field 'var' must be a symbol name"};
     const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(var);
-    if (kind == "antiderivative") {
-      // d rhs / d var = lhs
-      Verdict v = prove_equal(rhs.diff(x), lhs, table_, opt_);
-      v.method = "d/d" + x.get_name() + " of rhs + " + v.method;
-      v.side_conditions = side_conditions_of_sides({&nodes.at("rhs")}, table_);
-      require_antiderivative_defined(v, lhs, x.get_name(), table_);
-      return v;
-    }
+    if (kind == "antiderivative")
+      return checked(claims::antiderivative_derivation(file_, table_, nodes.at("lhs"), nodes.at("rhs"), nodes.at("var")));
     if (kind == "limit") {
-      ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
-      int dir = limit_direction();
-      LimitResult L = compute_limit(lhs, x, p, point_infinite_, dir, table_);
-      const std::string numeric = L.confirmed_numerically ? ", confirmed numerically" : "";
-      if (L.does_not_exist) {
-        Verdict v;
-        v.method = "limit (" + L.method + numeric + ")";
-        v.kind = rhs_undefined_ ? VerdictKind::Proved : VerdictKind::Refuted;
-        v.detail = L.reason;
-        if (!rhs_undefined_) {
-          v.lhs_value = "undefined";
-          v.rhs_value = j_.at("rhs").get<std::string>();
-        }
-        return v;
-      }
-      if (!L.ok) {
-        Verdict v;
-        v.kind = VerdictKind::Undecided;
-        v.method = "limit";
-        v.reason = L.reason;
-        return v;
-      }
-      std::string how = "limit (" + L.method + numeric + ")";
-      if (rhs_undefined_) {
-        Verdict v;
-        v.method = how;
-        v.kind = VerdictKind::Refuted;
-        v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
-        v.rhs_value = "undefined";
-        v.detail = "the limit exists: it is " + v.lhs_value;
-        return v;
-      }
-      if (L.infinite != 0 || rhs_infinite_ != 0) {
-        Verdict v;
-        v.method = how;
-        if (L.infinite == rhs_infinite_) v.kind = VerdictKind::Proved;
-        else {
-          v.kind = VerdictKind::Refuted;
-          v.lhs_value = L.infinite ? (L.infinite > 0 ? "oo" : "-oo") : print_text(L.value, table_);
-          v.rhs_value = j_.at("rhs").get<std::string>();
-          v.detail = "the limit is " + v.lhs_value;
-        }
-        return v;
-      }
-      Verdict v = prove_equal(L.value, rhs, table_, opt_);
-      v.method = how + " + " + v.method;
-      return v;
+      if (!point_infinite_) to_ginac(*point_node_, table_);
+      const int dir = limit_direction();
+      Node rhs = rhs_word_.empty() ? nodes.at("rhs") : parse_field("rhs", rhs_word_);
+      return checked(claims::limit_derivation(file_, table_, nodes.at("lhs"), rhs, approach(nodes.at("var"), dir)));
     }
     if (kind == "series") {
-      // lhs - rhs = O((var - point)^order) as var -> point (from "dir"): big_o.hpp.
+      // lhs - rhs = O((var - point)^order) as var -> point (from "dir")
       ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
       if (j_.contains("order") && !j_.at("order").is_number_integer())
         throw LineError{"field 'order' must be an integer (lhs - rhs = O((var - point)^order))"};
@@ -441,54 +372,32 @@ class ClaimLine {
       if (order < -1000 || order > 1000) throw LineError{"field 'order' must be between -1000 and 1000"};
       int dir = limit_direction();
       if (point_infinite_ && dir != 0) throw LineError{"field 'dir' goes with a finite point"};
-      return remainder_is_big_o(lhs - rhs, x, p, point_infinite_, dir, static_cast<int>(order), table_);
+      return checked(claims::series_derivation(file_, table_, nodes.at("lhs"), nodes.at("rhs"),
+                                               approach(nodes.at("var"), dir), static_cast<int>(order), big_o_));
     }
     if (kind == "series_first_order") {
-      ex p = to_ginac(*point_node_, table_);
-      std::string why;
-      auto s = series_first_order(lhs, x, p, &why, &table_);
-      if (!s) {
-        Verdict v;
-        v.kind = VerdictKind::Undecided;
-        v.method = "series";
-        v.reason = why.empty() ? "the series expansion failed" : why;
-        return v;
-      }
-      Verdict v = prove_equal(*s, rhs, table_, opt_);
-      v.method = "series (first order) + " + v.method;
-      return v;
+      // no "dir": the first-order form of the rule is two-sided
+      if (!point_infinite_) to_ginac(*point_node_, table_);
+      return checked(claims::series_derivation(file_, table_, nodes.at("lhs"), nodes.at("rhs"),
+                                               approach(nodes.at("var"), 0), std::nullopt, std::nullopt));
     }
     // solves_ode: the ODE lhs = rhs in y, yp, ypp; the claimed solution; initial values.
     ex sol = conv("solution");
-    GiNaC::exmap m;
-    const char* names[] = {"y", "yp", "ypp"};
-    ex d = sol;
-    for (int k = 0; k < 3; ++k) {
-      if (const SymbolInfo* info = table_.find(names[k])) {
-        if (sol.has(info->sym)) throw LineError{std::string("the solution must not contain '") + names[k] + "'"};
-        m[info->sym] = d;
-      }
-      d = d.diff(x);
-    }
-    Verdict v = prove_equal(lhs.subs(m), rhs.subs(m), table_, opt_);
-    v.method = "ODE residual + " + v.method;
-    if (!v.holds()) return v;
-    std::vector<std::string> methods{v.method};
-    for (std::size_t i = 0; i < initial_nodes.size() / 2; ++i) {
-      ex at = to_ginac(initial_nodes[2 * i], table_);
-      ex value = to_ginac(initial_nodes[2 * i + 1], table_);
-      ex s = sol;
-      for (int k = 0; k < initial_orders_[i]; ++k) s = s.diff(x);
-      Verdict iv = prove_equal(s.subs(x == at), value, table_, opt_);
-      if (!iv.holds()) {
-        iv.method = "initial condition " + std::to_string(i + 1) + " + " + iv.method;
-        return iv;
-      }
-    }
-    if (!initial_nodes.empty()) v.method += ", initial conditions";
-    v.side_conditions = side_conditions_of_sides({&nodes.at("solution")}, table_);
-    require_solution_without_singularities(v, x.get_name());
-    return v;
+    for (const char* name : claims::kOdeNames)
+      if (const SymbolInfo* info = table_.find(name); info && sol.has(info->sym))
+        throw LineError{std::string("the solution must not contain '") + name + "'"};
+    // The derivation's table declares y as a function of var (`function y(t)`), in place of the
+    // symbols y, yp, ypp: the ODE's sides are written with y(t) and its derivatives.
+    std::vector<Node> ode{claims::ode_form(nodes.at("lhs"), nodes.at("var")),
+                          claims::ode_form(nodes.at("rhs"), nodes.at("var"))};
+    std::vector<const Node*> ode_exprs{&ode[0], &ode[1], &nodes.at("solution"), &nodes.at("var")};
+    for (const auto& n : initial_nodes) ode_exprs.push_back(&n);
+    const SymbolTable ode_table = table_of(ode_exprs, {{claims::kOdeNames[0], x.get_name()}});
+    std::vector<claims::InitialValue> initial;
+    for (std::size_t i = 0; i < initial_nodes.size() / 2; ++i)
+      initial.push_back({initial_nodes[2 * i], initial_nodes[2 * i + 1], initial_orders_[i]});
+    return checked(claims::ode_derivation(file_, ode_table, nodes.at("lhs"), nodes.at("rhs"), nodes.at("var"),
+                                          nodes.at("solution"), initial));
   }
 
  private:
@@ -500,9 +409,24 @@ class ClaimLine {
   std::optional<Node> point_node_;
   std::optional<Node> big_o_;   // series: the argument of an O(...) term taken off the rhs
   int point_infinite_ = 0;
-  int rhs_infinite_ = 0;
-  bool rhs_undefined_ = false;   // limit: "rhs": "undefined" (the limit does not exist)
+  std::string rhs_word_;          // limit: "rhs" is oo, -oo or undefined (the limit rule's limit values)
   std::vector<int> initial_orders_;
+
+  // The claim's step checked by its rule (check_step): its verdict, or the first error of a
+  // step that could not be checked as an error of the line.
+  Verdict checked(const Derivation& d) {
+    StepResult res = claims::check_last_step(d, opt_);
+    if (!res.errors.empty()) throw LineError{res.errors.front().message()};
+    return res.verdict;
+  }
+
+  claims::Approach approach(const Node& var, int dir) {
+    claims::Approach a;
+    a.var = var;
+    a.point = point_infinite_ ? parse_field("point", point_infinite_ > 0 ? "oo" : "-oo") : *point_node_;
+    a.dir = dir;
+    return a;
+  }
 
   std::string text_field(const std::string& f, const nlohmann::json& j) {
     if (!j.contains(f)) throw LineError{"missing field '" + f + "'"};
@@ -523,12 +447,8 @@ class ClaimLine {
   Node expr(const std::string& f) {
     std::string t = text_field(f, j_);
     if (f == "rhs" && j_.value("kind", "") == "limit") {
-      if (t == "oo" || t == "+oo" || t == "-oo") {
-        rhs_infinite_ = t == "-oo" ? -1 : 1;
-        return parse_field(f, "0");
-      }
-      if (t == "undefined") {
-        rhs_undefined_ = true;
+      if (t == "oo" || t == "+oo" || t == "-oo" || t == "undefined") {
+        rhs_word_ = t == "+oo" ? "oo" : t;
         return parse_field(f, "0");
       }
     }

@@ -33,18 +33,24 @@ std::vector<AssumptionItem> parse_assumptions(const std::string& text, const Sou
 // first appearance becomes a symbol (real, dimensionless), with domains from `domains`
 // (name -> domain; the position is where that domain was written) and the constraints of
 // `items`. Throws InputError for conflicting domains and for assumptions that cannot all hold.
+// `functions` ({name, parameter}) are declared after the symbols as functions of one declared
+// symbol, as `function y(t) : real` declares them in a .dc file (a solves_ode claim's y).
 struct DomainAt {
   Domain domain;
   SourcePos pos;
 };
 SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<std::string, DomainAt>& domains,
-                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos);
+                        const std::vector<AssumptionItem>& items, const SourcePos& assume_pos,
+                        const std::vector<std::pair<std::string, std::string>>& functions = {});
 
-// `derivcheck equal`: parse both sides and the assumption list, then prove_equal.
+// `derivcheck equal`: parse both sides and the assumption list, then check `lhs = rhs` as a
+// one-step derivation (by rewrite, or by integrate when a side has an integral): the code of
+// the .dc rules (derivations/claims/internal/claim_steps.hpp).
 Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::string& assume,
                     const ProveOptions& opt = {});
 
-// One line of a claim bank. Never throws: a malformed line gives a result with "error".
+// One line of a claim bank. Never throws: a malformed line gives a result with "error". Each
+// kind of claim is checked as the one-step derivation of internal/claim_steps.hpp.
 // Keys in order: id (when the line has one), line, kind, verdict, method, (evidence), seconds | error.
 nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, const std::string& file,
                                         const ProveOptions& opt = {});

@@ -157,7 +157,7 @@ TEST_CASE("claims: one JSON result per line, a malformed line does not stop the 
   std::vector<std::string> lines;
   for (std::string l; std::getline(in, l);) lines.push_back(l);
   REQUIRE(lines.size() == 4);
-  CHECK(lines[0] == "{\"id\":\"c7\",\"line\":1,\"kind\":\"equal\",\"verdict\":\"proved\",\"method\":\"normal\","
+  CHECK(lines[0] == "{\"id\":\"c7\",\"line\":1,\"kind\":\"equal\",\"verdict\":\"proved\",\"method\":\"identity + normal\","
                     "\"detail\":\"normal(lhs - rhs) = 0\",\"side_conditions\":[{\"condition\":\"m1 + m2 != 0\","
                     "\"reason\":\"divisor\",\"status\":\"guaranteed\",\"evidence\":\"follows from the domains: m1 "
                     "positive, m2 positive\"}]}");
