@@ -73,7 +73,14 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
     while (q < s.text.size() && is_space(s.text[q])) ++q;
     if (q >= s.text.size() || (s.text[q] != '[' && s.text[q] != '('))
       fail(s.at(q), "expected an interval after 'in', e.g. 'in [0, 1]' or 'in (0, pi)'");
-    std::size_t close = s.text.find_first_of("])", q + 1);
+    // the bracket that closes the interval, past the parentheses of its bounds (`10^(-40)`)
+    std::size_t close = std::string::npos;
+    for (std::size_t i = q + 1, depth = 0; i < s.text.size() && close == std::string::npos; ++i) {
+      const char c = s.text[i];
+      if (c == '(') ++depth;
+      else if (c == ']' || (c == ')' && depth == 0)) close = i;
+      else if (c == ')') --depth;
+    }
     if (close == std::string::npos) fail(s.at(q), "expected ']' or ')' to close the interval");
     de = close + 1;
   } else if (dw.empty()) {

@@ -216,3 +216,17 @@ TEST_CASE("limit points carry a direction, oo, -oo and undefined are limit value
   // A declared symbol named undefined keeps its meaning.
   CHECK(error_of("symbol undefined : real [1]\na: 1/x = undefined\n    by limit x -> 0\n") == "no error");
 }
+
+TEST_CASE("an interval's bounds may contain parentheses", "[format]") {
+  dc::Derivation d = dc::parse_derivation(dc::SourceText{
+      "i.dc", "symbol x : in (0, 10^(-40)) [1]\nsymbol z : in [(1), 2*(3)] [1]\na: x = x\n    by rewrite\n"});
+  CHECK(d.symbols.find("x")->domain.to_string() == "in (0, 1/10000000000000000000000000000000000000000)");
+  CHECK(d.symbols.find("z")->domain.to_string() == "in [1, 6]");
+  try {
+    dc::parse_derivation(dc::SourceText{"j.dc", "symbol x : in (0, (1) \na: x = x\n    by rewrite\n"});
+    FAIL("no error");
+  } catch (const dc::InputError& e) {
+    CHECK(std::string(e.message()).find("expected ']' or ')' to close the interval") != std::string::npos);
+    CHECK(e.pos().col == 15);
+  }
+}
