@@ -523,3 +523,36 @@ TEST_CASE("a chain may name a new quantity, the name never hides a wrong link", 
   CHECK(c.d->find("bad_positive")->names_result);   // W is named, and its value must be positive:
   require_refuted(c, "bad_positive");                // -A is not
 }
+
+TEST_CASE("an indefinite integral's integrand is given, not claimed", "[rules][soundness][integrate]") {
+  // integral(f, x) = F claims dF/dx = f where f is defined: sqrt(x)^2 is undefined for x < 0,
+  // which says nothing against x^2/2; a closed form undefined where f is defined is refuted.
+  Checked c = check("indefinite.dc",
+                    "symbol x : real [1]\n"
+                    "a: integral(sqrt(x)^2, x) = x^2/2\n    by integrate\n"
+                    "b: integral(log(x)/log(x), x) = x\n    by integrate\n"
+                    "c: integral(1/x, x) = log(x)\n    by integrate\n"
+                    "d: integral(sqrt(x)^2, x) = x^2/3\n    by integrate\n");
+  require_holds(c, "a");
+  require_holds(c, "b");
+  require_refuted(c, "c");
+  require_refuted(c, "d");
+}
+
+TEST_CASE("a refuted limit side: the limit on the left, the side as written on the right", "[rules][limit]") {
+  Checked c = check("limit_values.dc",
+                    "symbol x : real [1]\n"
+                    "a: sin(x)/x = 2\n    by limit x -> 0\n"
+                    "b: 1/x = oo\n    by limit x -> 0\n"
+                    "e: sin(x)/x = undefined\n    by limit x -> 0\n");
+  require_refuted(c, "a");
+  CHECK(c.at("a").verdict.lhs_value.rfind("1.000", 0) == 0);
+  CHECK(c.at("a").verdict.rhs_value.rfind("2.000", 0) == 0);
+  require_refuted(c, "b");
+  CHECK(c.at("b").verdict.lhs_value == "undefined");
+  CHECK(c.at("b").verdict.rhs_value == "oo");
+  CHECK(c.at("b").verdict.detail.find("does not exist: the limit does not exist") == std::string::npos);
+  require_refuted(c, "e");
+  CHECK(c.at("e").verdict.lhs_value == "1");
+  CHECK(c.at("e").verdict.rhs_value == "undefined");
+}
