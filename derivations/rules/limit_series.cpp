@@ -59,7 +59,8 @@ Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, cons
   c.res.derived = c.text(f) + " + " + big_o_text(xs, inf ? ex(0) : point, inf, *rule.order, symbols);
   Combiner all;
   for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
-    std::string what = claim.sides.size() > 1 ? "side " + std::to_string(i + 1) : "";
+    // name the side only when several are compared (`f = L1 = L2`, or `of A` with two sides)
+    std::string what = claim.sides.size() > first_compared + 1 ? "side " + std::to_string(i + 1) : "";
     if (i == 0 && ref_lhs) {
       Verdict v = prove_equal(c.conv(claim.sides[0]), *ref_lhs, symbols, c.opt);
       v.method = prefix_method("series (left-hand side)", v.method);
@@ -173,7 +174,8 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
   Combiner all;
   for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
     const Node& written = claim.sides[i];
-    std::string what = claim.sides.size() > 1 ? "side " + std::to_string(i + 1) : "";
+    // name the side only when several are compared (`f = L1 = L2`, or `of A` with two sides)
+    std::string what = claim.sides.size() > first_compared + 1 ? "side " + std::to_string(i + 1) : "";
     if (limit_value_side(c.s, written, symbols)) {
       int sinf = 0;
       bool says_undefined = !is_infinity(written, sinf);
