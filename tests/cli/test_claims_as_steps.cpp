@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -165,7 +166,36 @@ std::string step_verdict(const json& file) {
 struct Comparison {
   int lines = 0, compared = 0, bank_errors = 0;
   std::vector<std::string> differ;
+  std::vector<std::string> unsteady;   // lines whose verdict kind varies from run to run on both paths
 };
+
+std::string join(const std::set<std::string>& kinds) {
+  std::string out;
+  for (const auto& k : kinds) out += (out.empty() ? "" : ", ") + k;
+  return out;
+}
+
+// The verdict kinds `runs` separate runs give one claim line and its .dc file. A few limits are
+// not decided the same way in every process (the limit engine's series budget is counted in
+// terms, and GiNaC's term order is per process: gr_8_15 of the published corpus is undecided,
+// "budget: a series with more than 60 terms", in about one run in ten on either path).
+std::pair<std::set<std::string>, std::set<std::string>> kinds_over_runs(const std::string& line,
+                                                                         const std::filesystem::path& dc,
+                                                                         const std::vector<std::string>& budget,
+                                                                         int runs) {
+  const std::filesystem::path jl = dc.parent_path() / "single.jsonl";
+  std::ofstream(jl) << line << "\n";
+  std::set<std::string> claim_kinds, step_kinds;
+  for (int i = 0; i < runs; ++i) {
+    std::vector<std::string> a{"claims", "--no-timings", jl.string()}, b{"check", dc.string(), "--json"};
+    a.insert(a.end(), budget.begin(), budget.end());
+    b.insert(b.end(), budget.begin(), budget.end());
+    claim_kinds.insert(json::parse(cli_test::run(a, 600).out).at("verdict").get<std::string>());
+    step_kinds.insert(step_verdict(json::parse(cli_test::run(b, 600).out).at("files").at(0)));
+  }
+  std::filesystem::remove(jl);
+  return {claim_kinds, step_kinds};
+}
 
 Comparison compare_corpus(const std::string& rel) {
   namespace fs = std::filesystem;
@@ -194,6 +224,7 @@ Comparison compare_corpus(const std::string& rel) {
   Comparison c;
   std::map<std::string, int> line_of_file;
   std::map<int, std::string> text_of_line;
+  std::map<int, std::filesystem::path> file_of_line;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     if (lines[i].find_first_not_of(" \t\r") == std::string::npos) continue;
     const int n = static_cast<int>(i + 1);
@@ -220,6 +251,7 @@ Comparison compare_corpus(const std::string& rel) {
     std::ofstream(p) << text;
     line_of_file[p.string()] = n;
     text_of_line[n] = text;
+    file_of_line[n] = p;
   }
   std::vector<std::string> cargs{"check", dir.string(), "--json"};
   cargs.insert(cargs.end(), budget.begin(), budget.end());
@@ -232,9 +264,21 @@ Comparison compare_corpus(const std::string& rel) {
     const std::string claim_kind = results.at(n).at("verdict");
     const std::string step_kind = step_verdict(f);
     ++c.compared;
-    if (claim_kind != step_kind)
+    if (claim_kind == step_kind) continue;
+    auto [claim_kinds, step_kinds] = kinds_over_runs(lines[n - 1], file_of_line.at(n), budget, 10);
+    claim_kinds.insert(claim_kind);
+    step_kinds.insert(step_kind);
+    // A path that varies from run to run, and a kind both paths give: the line is unsteady, not
+    // a disagreement between the paths. Paths that each give one kind must give the same one.
+    bool common = false;
+    for (const auto& k : claim_kinds) common = common || step_kinds.count(k);
+    if (common && (claim_kinds.size() > 1 || step_kinds.size() > 1))
+      c.unsteady.push_back("line " + std::to_string(n) + " (" + results.at(n).value("id", json("")).dump() +
+                           "): " + claim_kind + " / " + step_kind + " on both paths");
+    else
       c.differ.push_back("line " + std::to_string(n) + " (" + results.at(n).value("id", json("")).dump() +
-                         "): claims says " + claim_kind + ", check says " + step_kind + "\n" + text_of_line.at(n));
+                         "): claims says " + claim_kind + ", check says " + step_kind + " (over 10 more runs: " +
+                         join(claim_kinds) + " / " + join(step_kinds) + ")\n" + text_of_line.at(n));
   }
   if (static_cast<std::size_t>(c.compared) != line_of_file.size())
     c.differ.push_back("check reported " + std::to_string(c.compared) + " of " + std::to_string(line_of_file.size()) +
@@ -246,8 +290,9 @@ Comparison compare_corpus(const std::string& rel) {
 void require_same_verdicts(const std::string& rel, int min_compared) {
   const Comparison c = compare_corpus(rel);
   INFO(rel << ": " << c.lines << " claims, " << c.compared << " compared, " << c.bank_errors
-           << " skipped (errors in the bank)");
+           << " skipped (errors in the bank), " << c.unsteady.size() << " not decided alike in every run");
   for (const auto& d : c.differ) UNSCOPED_INFO(d);
+  for (const auto& u : c.unsteady) WARN(rel << ": not decided alike in every run, on both paths: " << u);
   CHECK(c.differ.empty());
   CHECK(c.compared >= min_compared);
 }
