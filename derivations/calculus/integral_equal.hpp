@@ -1,6 +1,6 @@
-// A definite integral as a whole side of an equation, `integral(f, x, a, b) = G`, in
-// `derivcheck equal`, in claims of kind "equal" and in the Catch2 matchers (a `.dc` step checks
-// it with `by integrate`). Methods, in order:
+// A definite integral as a whole side of an equation, `integral(f, x, a, b) = G`, as the rule
+// `by integrate` checks it (rules/integrate.cpp; `derivcheck equal` and claims of kind "equal"
+// are checked as that step) and the Catch2 matchers. Methods, in order:
 //   1. GiNaC integrates a polynomial integrand exactly (integral::eval_integ); the result is
 //      compared with G by the prover;
 //   2. when the upper limit b is a symbol that the integrand does not contain: G is an
