@@ -9,15 +9,6 @@ namespace dc::claims {
 
 namespace {
 
-Node symbol_node(const std::string& name, const SourcePos& pos) {
-  Node n;
-  n.kind = NodeKind::Symbol;
-  n.text = name;
-  n.pos = pos;
-  n.length = static_cast<int>(std::max<std::size_t>(1, name.size()));
-  return n;
-}
-
 Node call_node(const std::string& name, std::vector<Node> args, const SourcePos& pos) {
   Node n;
   n.kind = NodeKind::Call;
@@ -155,15 +146,9 @@ Derivation antiderivative_derivation(const std::string& file, const SymbolTable&
 Derivation ode_derivation(const std::string& file, const SymbolTable& table, const Node& ode_lhs, const Node& ode_rhs,
                           const Node& var, const Node& solution, const std::vector<InitialValue>& initial) {
   Step ode = make_step("ode", {ode_form(ode_lhs, var), ode_form(ode_rhs, var)}, rule_named("given", "", ode_lhs.pos));
-  std::string with;
-  RuleSpec r;
-  r.refs.push_back(RuleArg{});
-  RuleArg& ref = r.refs.back();
-  ref.kind = RuleArg::Kind::Label;
-  ref.label = "ode";
-  ref.pos = ode_lhs.pos;
-  ref.length = 3;
-  r.var = symbol_arg(var);
+  // `with y(a) = v, y'(b) = w`
+  std::vector<RuleArg> with;
+  std::string with_text;
   for (const auto& iv : initial) {
     RuleArg w;
     w.kind = RuleArg::Kind::Equation;
@@ -173,14 +158,18 @@ Derivation ode_derivation(const std::string& file, const SymbolTable& table, con
               to_text(iv.at) + ") = " + to_text(iv.value);
     w.pos = iv.at.pos;
     w.length = std::max(1, iv.at.length);
-    with += (with.empty() ? " with " : ", ") + w.label;
-    r.with.push_back(std::move(w));
+    with_text += (with_text.empty() ? " with " : ", ") + w.label;
+    with.push_back(std::move(w));
   }
-  const RuleSpec named = rule_named("solves_ode", "ode wrt " + var.text + with, solution.pos);
-  r.name = named.name;
-  r.written_name = named.written_name;
-  r.text = named.text;
-  r.pos = named.pos;
+  RuleSpec r = rule_named("solves_ode", "ode wrt " + var.text + with_text, solution.pos);
+  RuleArg ref;
+  ref.kind = RuleArg::Kind::Label;
+  ref.label = ode.label;
+  ref.pos = ode_lhs.pos;
+  ref.length = static_cast<int>(ode.label.size());
+  r.refs.push_back(std::move(ref));
+  r.var = symbol_arg(var);
+  r.with = std::move(with);
   Step claim = make_step("claim", {call_node(kOdeNames[0], {var}, solution.pos), solution}, std::move(r));
   return one_step(file, table, {std::move(ode), std::move(claim)});
 }
