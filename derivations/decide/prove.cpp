@@ -411,7 +411,9 @@ void require_solution_without_singularities(Verdict& v, const std::string& var) 
     if (!names_symbol(sc.what, var)) continue;
     v.kind = VerdictKind::Undecided;
     v.reason = "the claimed solution may be singular inside the domain (" + sc.what + ", " + sc.reason + ", " +
-               (sc.status == SideCondition::Status::Violated ? "fails " + sc.evidence : "is not guaranteed by the declarations") +
+               (sc.status != SideCondition::Status::Violated ? std::string("is not guaranteed by the declarations")
+                : sc.evidence.rfind("fails", 0) == 0         ? sc.evidence
+                                                              : "fails " + sc.evidence) +
                "): the residual and the initial values prove it only up to the "
                "first singularity, and a closed form can jump there (atan(1/" + var + ") + atan(" + var +
                ") has derivative 0 but is not constant); restrict the domain or add an assumption";

@@ -132,3 +132,18 @@ TEST_CASE("side conditions: sin on (0, pi) is positive, a constraint times a pos
   // the constraint gives no sign to a factor of unknown sign
   CHECK(status_of(GiNaC::sqrt(T["phi"] * (T["y2"] - T["r2"]))) != SideCondition::Status::Guaranteed);
 }
+
+TEST_CASE("require_solution_without_singularities names a failing condition once", "[side][ode]") {
+  dc::Verdict v;
+  v.kind = dc::VerdictKind::Proved;
+  dc::SideCondition sc;
+  sc.what = "t != 0";
+  sc.reason = "divisor";
+  sc.status = dc::SideCondition::Status::Violated;
+  sc.evidence = "fails at t = 0 (value 0)";
+  v.side_conditions.push_back(sc);
+  dc::require_solution_without_singularities(v, "t");
+  CHECK(v.kind == dc::VerdictKind::Undecided);
+  CHECK(v.reason.find("(t != 0, divisor, fails at t = 0 (value 0))") != std::string::npos);
+  CHECK(v.reason.find("fails fails") == std::string::npos);
+}
