@@ -1,5 +1,8 @@
 #include "derivations/exec/budget.hpp"
 
+#include <csignal>
+#include <cstring>
+
 #include <sched.h>
 #include <unistd.h>
 
@@ -99,6 +102,29 @@ std::string bytes_text(std::uint64_t b) {
   if (b >= (std::uint64_t{1} << 30)) o << static_cast<double>(b) / gib << " GiB";
   else o << static_cast<double>(b) / mib << " MiB";
   return o.str();
+}
+
+std::string time_budget_reason(const Budget& b) { return "time budget " + seconds_text(b.cpu_seconds) + " exceeded"; }
+std::string memory_budget_reason(const Budget& b) { return "memory budget " + bytes_text(b.memory_bytes) + " exceeded"; }
+std::string wall_budget_reason(const Budget& b) {
+  return "no answer within the wall-clock backstop of " + seconds_text(b.wall_seconds());
+}
+
+std::string signal_name(int sig) {
+  switch (sig) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGBUS: return "SIGBUS";
+    case SIGILL: return "SIGILL";
+    case SIGFPE: return "SIGFPE";
+    case SIGABRT: return "SIGABRT";
+    case SIGKILL: return "SIGKILL";
+    default: return "signal " + std::to_string(sig);
+  }
+}
+
+bool is_memory_message(const char* what) {
+  return std::strstr(what, "Out of virtual memory") != nullptr || std::strstr(what, "bad_alloc") != nullptr ||
+         std::strstr(what, "Cannot allocate memory") != nullptr;
 }
 
 }  // namespace dc::exec

@@ -31,4 +31,15 @@ std::uint64_t parse_bytes(const std::string& text);
 std::string seconds_text(double s);
 std::string bytes_text(std::uint64_t b);
 
+// The reasons a budget stop prints, the same for a task of the pool and for reading a file:
+// "time budget 2 s exceeded", "memory budget 2 GiB exceeded", "no answer within the wall-clock
+// backstop of 18 s".
+std::string time_budget_reason(const Budget& b);
+std::string memory_budget_reason(const Budget& b);
+std::string wall_budget_reason(const Budget& b);
+// "SIGSEGV", ..., else "signal N".
+std::string signal_name(int sig);
+// Does an exception's text say that an allocation failed (CLN, GMP, std::bad_alloc)?
+bool is_memory_message(const char* what);
+
 }  // namespace dc::exec

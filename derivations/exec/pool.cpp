@@ -113,11 +113,6 @@ void on_fault(int sig) {
   _exit(70);
 }
 
-bool is_memory_message(const char* what) {
-  return std::strstr(what, "Out of virtual memory") != nullptr || std::strstr(what, "bad_alloc") != nullptr ||
-         std::strstr(what, "Cannot allocate memory") != nullptr;
-}
-
 [[noreturn]] void worker_main(int task_fd, int result_fd, pid_t parent, const Budget& budget, const Handler& handler) {
   g_result_fd = result_fd;
   prctl(PR_SET_PDEATHSIG, SIGKILL);
@@ -198,18 +193,6 @@ bool is_memory_message(const char* what) {
     if (!write_frame(result_fd, status, result.data(), result.size())) _exit(0);
     // After a failed allocation or an escaped exception the worker's state is not trusted.
     if (status != kDone) _exit(0);
-  }
-}
-
-std::string signal_name(int sig) {
-  switch (sig) {
-    case SIGSEGV: return "SIGSEGV";
-    case SIGBUS: return "SIGBUS";
-    case SIGILL: return "SIGILL";
-    case SIGFPE: return "SIGFPE";
-    case SIGABRT: return "SIGABRT";
-    case SIGKILL: return "SIGKILL";
-    default: return "signal " + std::to_string(sig);
   }
 }
 
@@ -325,11 +308,9 @@ struct Pool::Impl {
     TaskOutcome o;
     o.status = s;
     switch (s) {
-      case TaskOutcome::Status::TimeBudget: o.reason = "time budget " + seconds_text(budget.cpu_seconds) + " exceeded"; break;
-      case TaskOutcome::Status::MemoryBudget: o.reason = "memory budget " + bytes_text(budget.memory_bytes) + " exceeded"; break;
-      case TaskOutcome::Status::WallBudget:
-        o.reason = "no answer within the wall-clock backstop of " + seconds_text(budget.wall_seconds());
-        break;
+      case TaskOutcome::Status::TimeBudget: o.reason = time_budget_reason(budget); break;
+      case TaskOutcome::Status::MemoryBudget: o.reason = memory_budget_reason(budget); break;
+      case TaskOutcome::Status::WallBudget: o.reason = wall_budget_reason(budget); break;
       default: o.reason = extra; break;
     }
     return o;

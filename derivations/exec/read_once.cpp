@@ -20,7 +20,7 @@
 #include <map>
 #include <new>
 
-#include "derivations/exec/pool.hpp"
+#include "derivations/exec/budget.hpp"
 #include "derivations/symbolic/verdict.hpp"
 
 namespace dc::exec {
@@ -45,11 +45,6 @@ void send(int fd, const char* data, std::size_t n) {
     data += w;
     n -= static_cast<std::size_t>(w);
   }
-}
-
-bool is_memory_failure(const char* what) {
-  return std::strstr(what, "Out of virtual memory") || std::strstr(what, "bad_alloc") ||
-         std::strstr(what, "Cannot allocate memory");
 }
 
 // The child: reads every file not in `failed`, each under the budget, and returns.
@@ -103,7 +98,7 @@ std::vector<ReadFile> read_in_child(const std::vector<std::string>& files, const
     } catch (const std::exception& e) {
       // Not an input error and not the budget: a library failure while reading. The state of
       // this process is not trusted after it; the supervisor records it and starts afresh.
-      send(fd, is_memory_failure(e.what()) ? "M" : "E", 1);
+      send(fd, is_memory_message(e.what()) ? "M" : "E", 1);
       _exit(0);
     }
     setitimer(ITIMER_PROF, &disarm, nullptr);
@@ -115,11 +110,6 @@ std::vector<ReadFile> read_in_child(const std::vector<std::string>& files, const
   ::close(fd);
   g_report_fd = -1;
   return out;
-}
-
-std::string signal_text(int sig) {
-  const char* name = sigabbrev_np(sig);
-  return name ? std::string("SIG") + name : "signal " + std::to_string(sig);
 }
 
 // The parent: waits for the child's verdict on each file; exits with the child's status.
@@ -195,12 +185,12 @@ std::vector<ReadFile> read_files_once(const std::vector<std::string>& files, con
     if (current < 0) exit_like(status);   // it ended before reading anything: nothing to retry
     std::string reason;
     switch (why) {
-      case 'T': reason = "time budget " + seconds_text(budget.cpu_seconds) + " exceeded"; break;
-      case 'M': reason = "memory budget " + bytes_text(budget.memory_bytes) + " exceeded"; break;
-      case 'W': reason = "no answer within the wall-clock backstop of " + seconds_text(budget.wall_seconds()); break;
+      case 'T': reason = time_budget_reason(budget); break;
+      case 'M': reason = memory_budget_reason(budget); break;
+      case 'W': reason = wall_budget_reason(budget); break;
       case 'E': reason = "a symbolic computation failed"; break;
       default:
-        reason = WIFSIGNALED(status) ? "the reading ended with " + signal_text(WTERMSIG(status))
+        reason = WIFSIGNALED(status) ? "the reading ended with " + signal_name(WTERMSIG(status))
                                      : "the reading process ended early";
     }
     const std::string& path = files[static_cast<std::size_t>(current)];

@@ -152,11 +152,8 @@ int Gruntz::constant_sign(const ex& c) {
     if (prove_zero(cn, ctx_, opt).kind == VerdictKind::Proved) s = 0;
   }
   if (s == 2) {
-    // The sign of c or of -c: the same words whichever sign GiNaC's term order gave c (it shifts
-    // with the order in which symbols were created); the form without a leading '-' is named.
-    std::string t1 = text(c), t2 = text(-c);
-    const bool n1 = !t1.empty() && t1[0] == '-', n2 = !t2.empty() && t2[0] == '-';
-    const std::string named = (n1 != n2) ? (n1 ? t2 : t1) : std::min(t1, t2);
+    // The sign of c or of -c: the same words whichever sign GiNaC's term order gave c.
+    const std::string named = text_up_to_sign(text(c), text(-c));
     throw Undecided(syms.empty() ? "the sign of the constant " + named + " could not be decided"
                                  : "the sign of " + named + " is not determined by the declarations");
   }

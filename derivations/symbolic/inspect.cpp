@@ -90,8 +90,6 @@ namespace dc {
 using GiNaC::ex;
 using GiNaC::numeric;
 
-DigitsGuard::DigitsGuard(long digits) : saved_(GiNaC::Digits) { GiNaC::Digits = digits; }
-DigitsGuard::~DigitsGuard() { GiNaC::Digits = saved_; }
 
 // ------------------------------------------------------------------ resource estimate
 

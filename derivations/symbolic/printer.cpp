@@ -719,10 +719,13 @@ std::string print_number(const GiNaC::ex& e, int digits) {
   return real_text(re) + (im.is_negative() ? " - " : " + ") + is;
 }
 
-std::string print_text_up_to_sign(const GiNaC::ex& e, const SymbolTable& table) {
-  std::string t1 = print_text(e, table), t2 = print_text(-e, table);
+std::string text_up_to_sign(std::string t1, std::string t2) {
   const bool n1 = !t1.empty() && t1[0] == '-', n2 = !t2.empty() && t2[0] == '-';
   return (n1 != n2) ? (n1 ? t2 : t1) : std::min(t1, t2);
+}
+
+std::string print_text_up_to_sign(const GiNaC::ex& e, const SymbolTable& table) {
+  return text_up_to_sign(print_text(e, table), print_text(-e, table));
 }
 
 }  // namespace dc

@@ -22,6 +22,8 @@ std::string print_number(const GiNaC::ex& e, int digits = 20);
 // text). GiNaC may store 1/(v1 - v2) as -1/(v2 - v1) depending on its symbol order, which shifts
 // with anything that creates symbols earlier; this keeps the words the same.
 std::string print_text_up_to_sign(const GiNaC::ex& e, const SymbolTable& table);
+// The choice itself, for any printer: `of_e` and `of_minus_e` are the texts of e and -e.
+std::string text_up_to_sign(std::string of_e, std::string of_minus_e);
 // The TeX spelling of a name with no declared TeX name: m1 -> m_{1}, theta -> \theta,
 // v_e -> v_{e}, mass -> \mathit{mass}.
 std::string default_tex_name(const std::string& name);

@@ -1,7 +1,12 @@
 // The spellings and exit codes of verdicts (verdict.hpp).
 #include "derivations/symbolic/verdict.hpp"
 
+#include <ginac/ginac.h>
+
 namespace dc {
+
+DigitsGuard::DigitsGuard(long digits) : saved_(GiNaC::Digits) { GiNaC::Digits = digits; }
+DigitsGuard::~DigitsGuard() { GiNaC::Digits = saved_; }
 
 const char* to_string(VerdictKind k) {
   switch (k) {
