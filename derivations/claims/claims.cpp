@@ -57,19 +57,25 @@ std::vector<AssumptionItem> parse_assumptions(const std::string& text, const Sou
   };
   // split at top-level commas ([0, 1] and (0, pi) contain commas)
   std::vector<std::pair<std::size_t, std::size_t>> items;
-  int depth = 0;
+  // An unbalanced bracket is an error at the bracket: dropping the item (`x in [0,1`) would
+  // check the claim on a wider domain than the author meant.
+  std::vector<std::size_t> open;
   std::size_t from = 0;
   for (std::size_t i = 0; i <= text.size(); ++i) {
     char c = i < text.size() ? text[i] : ',';
-    if (c == '(' || c == '[') ++depth;
-    else if (c == ')' || c == ']') --depth;
-    if (c == ',' && depth <= 0) {
+    if (c == '(' || c == '[') open.push_back(i);
+    else if (c == ')' || c == ']') {
+      if (open.empty()) fail(i, std::string("unmatched '") + c + "' in the assumptions");
+      open.pop_back();
+    }
+    if (i == text.size() && !open.empty())
+      fail(open.back(), std::string("unclosed '") + text[open.back()] + "' in the assumptions (e.g. 'e in [0, 1]')");
+    if (c == ',' && open.empty()) {
       std::size_t b = from, e = i;
       trim(text, b, e);
       if (b < e) items.push_back({b, e});
       else if (i < text.size() || !items.empty()) fail(b, "expected an assumption (e.g. 'm1 > 0', 'v1 real', 'e in [0,1]')");
       from = i + 1;
-      depth = 0;
     }
   }
   for (auto [b, e] : items) {

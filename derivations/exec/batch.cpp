@@ -183,10 +183,11 @@ std::string verdict_of(const std::string& json_line) {
 
 ClaimsTally check_claims(const std::string& file, const Shard& shard, bool timings, const RunOptions& opt,
                          std::ostream& out) {
-  InputFile in(file);
+  InputFile in(file, InputFile::Streams::Allowed);   // a bank may come from a pipe: `... | derivcheck claims -`
   LineReader reader(in);
   struct stat st {};
-  double total_bytes = ::stat(file.c_str(), &st) == 0 && st.st_size > 0 ? static_cast<double>(st.st_size) : -1;
+  double total_bytes =
+      file != "-" && ::stat(file.c_str(), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 ? static_cast<double>(st.st_size) : -1;
   double read_bytes = 0;
   // A task: line number (4 bytes), too-long flag (1 byte), then the line (or its length).
   const ProveOptions prove = opt.prove;

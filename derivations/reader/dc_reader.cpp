@@ -341,10 +341,14 @@ struct Definition {
   const Node* at_point = nullptr;   // the body for arguments other than the parameters, if different
 };
 
-bool defines_name(const Step& s) {
+}  // namespace
+
+bool introduces_name(const Step& s) {
   return (s.rule.name == "definition" || s.names_result) && s.claim.sides.size() >= 2 &&
          (s.claim.sides[0].kind == NodeKind::Call || s.claim.sides[0].kind == NodeKind::Symbol);
 }
+
+namespace {
 
 Definition definition_of(const Derivation& d, const Step& s) {
   // A named result `V(t) = E1 = E2` (and a definition written as a chain) names E1: a wrong E2
@@ -400,7 +404,7 @@ class Definitions {
   explicit Definitions(const Derivation& d) : d_(d) {
     if (!d.indexed)
       for (const auto& s : d.steps)
-        if (defines_name(s)) local_[s.claim.sides[0].text] = definition_of(d, s);
+        if (introduces_name(s)) local_[s.claim.sides[0].text] = definition_of(d, s);
   }
   bool empty() const { return d_.indexed ? d_.definition_index.empty() : local_.empty(); }
   std::optional<Definition> find(const std::string& name) const {
@@ -489,7 +493,7 @@ void Derivation::index() {
   definition_index.clear();
   for (std::size_t i = 0; i < steps.size(); ++i) {
     label_index.emplace(steps[i].label, i);   // the first step of a label, as the scan finds it
-    if (defines_name(steps[i])) definition_index[steps[i].claim.sides[0].text] = i;
+    if (introduces_name(steps[i])) definition_index[steps[i].claim.sides[0].text] = i;
   }
   indexed = true;
 }

@@ -97,8 +97,11 @@ void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
          static_cast<int>(h.label.size()));
 
   if (step.rule.name == "series") order_term(step);
-  // Symbols: a definition introduces its left-hand side.
-  if (step.rule.name == "definition") introduce_definition(step);
+  // Symbols: a definition introduces its left-hand side; so does a named result whose name
+  // was never declared (`W = integral(F, x, 0, L) = F0*L/2  by integrate`).
+  if (step.rule.name == "definition" || (names_operation_result(step) && step.claim.sides[0].kind == NodeKind::Symbol &&
+                                         !d_.symbols.find(step.claim.sides[0].text)))
+    introduce_definition(step);
   // Undefined symbols (and other conversion errors) in the claim; for an erratum step the
   // printed claim's error is kept for the report, the corrected claim must be valid.
   if (step.erratum) {
@@ -108,6 +111,12 @@ void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
       if (!limit_value_side(step, side, d_.symbols)) validate_side(side);
   }
   step.names_result = names_new_quantity(step);
+  if (step.rule.name == "given") note_bound_names(step);
+  step.first_side_fresh = !step.names_result && step.rule.name != "given" && step.rule.name != "definition" &&
+                          step.claim.sides.size() >= 2 && !step.erratum &&
+                          (step.claim.sides[0].kind == NodeKind::Symbol || step.claim.sides[0].kind == NodeKind::Call) &&
+                          d_.symbols.find(step.claim.sides[0].text) && !used_names_.count(step.claim.sides[0].text);
+  if (step.names_result) named_results_[step.claim.sides[0].text] = d_.steps.size();
   auto note_names = [&](const Relation& r) {
     for (const auto& side : r.sides) {
       std::vector<const Node*> ids;
@@ -151,10 +160,79 @@ void DcReader::order_term(Step& step) {
   last = rest;
 }
 
-// See Step::names_result.
-bool DcReader::names_new_quantity(const Step& step) const {
+namespace {
+
+// An operation whose result a step may name: an integral, a derivative, a limit, or a declared
+// function evaluated (`x(T)`, the range as the position at the time of flight).
+bool is_operation(const Node& n, const SymbolTable& symbols) {
+  if (n.kind != NodeKind::Call) return false;
+  if (n.text == "integral" || n.text == "diff" || n.text == "limit") return true;
+  const SymbolInfo* f = is_builtin_function(n.text) ? nullptr : symbols.find(n.text);
+  return f && f->is_function;
+}
+
+bool has_operation(const Node& n, const SymbolTable& symbols) {
+  if (is_operation(n, symbols)) return true;
+  for (const auto& a : n.args)
+    if (has_operation(a, symbols)) return true;
+  return false;
+}
+
+// One operation, scaled: OP, -OP, OP*c, c*OP, OP/c with c free of operations
+// (`integral(x*lambda(x), x, 0, L)/M`). Not a sum: `I_G + m*d^2` is a result to derive.
+bool scaled_operation(const Node& n, const SymbolTable& symbols) {
+  if (is_operation(n, symbols)) return true;
+  if (n.kind == NodeKind::Neg) return scaled_operation(n.args[0], symbols);
+  if (n.kind == NodeKind::Mul)
+    return (scaled_operation(n.args[0], symbols) && !has_operation(n.args[1], symbols)) ||
+           (scaled_operation(n.args[1], symbols) && !has_operation(n.args[0], symbols));
+  if (n.kind == NodeKind::Div) return scaled_operation(n.args[0], symbols) && !has_operation(n.args[1], symbols);
+  return false;
+}
+
+}  // namespace
+
+// The shape of a named result (Step::names_result): a chain `NAME = OP(...) = ...` of at least
+// three sides whose first link is one operation, an integral, a derivative, a limit or a
+// declared function's value, possibly scaled (`U = -integral(...)`, `R = x(T)`,
+// `x_cm = integral(x*lambda(x), x, 0, L)/M`), under a rule other than given/definition. Only
+// an operation's result can be named:
+// `K = a*b + a*b = 2*a*b  by rewrite` is a claim about K like any other, so a wrong first link
+// is refuted instead of silently defining K.
+bool DcReader::names_operation_result(const Step& step) const {
   if (step.rule.name == "given" || step.rule.name == "definition" || step.erratum) return false;
   if (step.claim.sides.size() < 3) return false;
+  const Node& n = step.claim.sides[0];
+  if (n.kind != NodeKind::Symbol && n.kind != NodeKind::Call) return false;
+  return scaled_operation(step.claim.sides[1], d_.symbols);
+}
+
+// A premise that mentions a name bound by an earlier named result speaks of that value: a
+// general law written later with the same letters (`I_O = I_G + m*d^2` after the rod's
+// `I_G = integral(...) = m*L^2/12`) silently becomes a statement about the rod. Say so at the
+// name, once per name and step (a note: the premise may mean exactly that).
+void DcReader::note_bound_names(Step& step) const {
+  std::set<std::string> seen;
+  for (const auto& side : step.claim.sides) {
+    std::vector<const Node*> ids;
+    collect_identifiers(side, ids);
+    for (const Node* id : ids) {
+      auto it = named_results_.find(id->text);
+      if (it == named_results_.end() || !seen.insert(id->text).second) continue;
+      const Step& by = d_.steps[it->second];
+      step.diagnostics.push_back(InputError::note(
+          id->pos,
+          "'" + id->text + "' here is the value that step '" + by.label + "' (line " + std::to_string(by.pos.line) +
+              ") named, " + to_text(by.claim.sides[1]) + "; this premise is a statement about that value (use another " +
+              "name for another quantity)",
+          id->length, d_.source.line(id->pos.line)));
+    }
+  }
+}
+
+// See Step::names_result.
+bool DcReader::names_new_quantity(const Step& step) const {
+  if (!names_operation_result(step)) return false;
   const Node& n = step.claim.sides[0];
   if (used_names_.count(n.text)) return false;
   const SymbolInfo* info = d_.symbols.find(n.text);

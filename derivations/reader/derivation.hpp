@@ -73,6 +73,12 @@ struct Step {
   // `by series`: the claim's last side ended in an order term, `x - x^3/6 + O(x^5)`; the term
   // was taken off the claim (it gives rule.order) and is kept here for printing.
   std::optional<Node> order_term;
+  // The first side is a declared name that no earlier step mentions (and the step does not
+  // introduce it): nothing but this claim speaks of it, so a refutation says how to define it.
+  bool first_side_fresh = false;
+  // Positioned warnings and notes about this step that stop nothing: a premise that mentions a
+  // name an earlier step's named result bound (the premise then speaks of that value).
+  std::vector<InputError> diagnostics;
 };
 
 
@@ -113,6 +119,10 @@ bool limit_value_side(const Step& s, const Node& side, const SymbolTable& symbol
 
 // For an erratum step: the InputError the printed claim raises (nullopt if none).
 std::optional<InputError> erratum_error(const Derivation& d, const Step& s);
+
+// The step introduces the name on its first side for the steps after it: a `definition`, or a
+// named result (Step::names_result). The name's value is the second side.
+bool introduces_name(const Step& s);
 
 // Definition steps act as abbreviations: every use of a name introduced by `by definition`
 // (NEW or NEW(t)) is replaced by its defining expression (parameters substituted).

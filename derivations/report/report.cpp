@@ -171,7 +171,7 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       const Step& s = d.steps[i];
       std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
       bool ok = own == 0 && r.verdict.holds();
-      if (opt.quiet && ok && !r.erratum_reported) continue;
+      if (opt.quiet && ok && !r.erratum_reported && s.diagnostics.empty()) continue;
       std::string line = pos_text(s.pos) + ": " + mark(r) + " " + s.label;
       if (!s.tag.empty()) line += " (" + s.tag + ")";
       line += " " + s.rule.written_name + " \u2014 " +
@@ -184,6 +184,9 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       out += verdict_evidence(r.verdict, "    ");
       if (!ok && !r.derived.empty()) out += "    derived: " + r.derived + "\n";
       if (!opt.quiet) {
+        if (introduces_name(s))
+          out += "    introduces: " + to_text(s.claim.sides[0]) + " = " + to_text(s.claim.sides[1]) +
+                 ", for the steps after it\n";
         for (const auto& sc : r.verdict.side_conditions)
           if (sc.status != SideCondition::Status::Guaranteed)
             out += "    side condition: " + sc.what + " (" + sc.reason + ") " + side_condition_status(sc.status) +
@@ -191,6 +194,7 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
         for (const auto& n : s.notes) out += "    note: " + n + "\n";
       }
       for (const auto& e : r.errors) out += e.format();
+      for (const auto& w : s.diagnostics) out += w.format();
     }
   }
   Totals t = totals(files);
@@ -239,10 +243,21 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
       if (r.premise && r.verdict.holds()) j["verdict"] = "premise";
       j["derived"] = r.derived;
       j["dimension"] = r.dimension;
+      if (introduces_name(s))
+        j["introduces"] = {{"name", to_text(s.claim.sides[0])}, {"value", to_text(s.claim.sides[1])}};
       nlohmann::ordered_json errs = nlohmann::ordered_json::array();
       for (const auto& e : r.errors) errs.push_back(error_json(e));
       j["errors"] = errs;
       j["erratum_reported"] = r.erratum_reported;
+      if (!s.diagnostics.empty()) {
+        nlohmann::ordered_json ws = nlohmann::ordered_json::array();
+        for (const auto& w : s.diagnostics) {
+          nlohmann::ordered_json wj = error_json(w);
+          wj["severity"] = w.severity_word();
+          ws.push_back(wj);
+        }
+        j["diagnostics"] = ws;
+      }
       if (!s.notes.empty()) j["notes"] = s.notes;
       if (opt.timings) j["seconds"] = r.seconds;
       steps.push_back(j);

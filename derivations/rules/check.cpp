@@ -128,6 +128,14 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   check_dimensions(d, s, claim, res);
   res.verdict = rules::run_rule(d, s, claim, opt, res);
   add_claim_side_conditions(d, s, claim, res);
+  if (s.first_side_fresh && res.verdict.kind == VerdictKind::Refuted && claim.sides.size() >= 2) {
+    // Most likely the author meant to define the name; say how (docs/format.md, "Chains and names").
+    const std::string name = to_text(claim.sides[0]);
+    res.verdict.detail += std::string(res.verdict.detail.empty() ? "" : "; ") + "'" + name +
+                          "' appears in no earlier step, so nothing determines it: only a definition introduces a name " +
+                          "(write '" + name + " = " + to_text(claim.sides[1]) +
+                          "  by definition' as a step of its own and derive the rest from it)";
+  }
   // A claim must hold on the whole declared domain (premises only warn).
   if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
   // An ODE solution proved by residual and initial values holds only up to a singularity.

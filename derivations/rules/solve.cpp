@@ -55,7 +55,7 @@ bool determines(StepContext& c, const std::vector<ex>& nums, const std::vector<e
 // The linear case: lsolve, then the claim compared with the solution. nullopt when the
 // equations are not linear in the unknowns or lsolve does not determine them.
 std::optional<Verdict> solve_linear(StepContext& c, const Unknowns& u, const std::vector<ex>& E,
-                                    const std::vector<ex>& sd) {
+                                    const std::vector<ex>& sd, bool& undetermined) {
   bool linear = E.size() >= u.syms.size();
   std::vector<ex> nums;
   for (const auto& e : E) {
@@ -74,6 +74,7 @@ std::optional<Verdict> solve_linear(StepContext& c, const Unknowns& u, const std
     }
   }
   if (linear && !determines(c, nums, u.syms)) {
+    undetermined = true;
     std::string names;
     for (const auto& x : u.syms) names += (names.empty() ? "" : ", ") + c.text(u.out(c, x));
     return undecided("lsolve", "the equations do not determine " + names +
@@ -257,7 +258,21 @@ Verdict solve(StepContext& c, const Relation& claim) {
       c.fail(rule.unknowns[i].pos, "the unknown '" + rule.unknowns[i].label + "' does not appear in the equations",
              rule.unknowns[i].length);
   }
-  if (auto v = solve_linear(c, u, E, sd)) return *v;
+  bool undetermined = false;
+  if (auto v = solve_linear(c, u, E, sd, undetermined)) {
+    if (!undetermined) return *v;
+    // The equations leave an unknown free: every value of it that satisfies them is a
+    // counterexample to a claim that pins it (u = 0 from an identity in u). Whether the claim
+    // follows is decided as for `rewrite`, whose counterexamples satisfy the references.
+    std::vector<ex> preferred;
+    for (auto& x : u.syms) preferred.push_back(u.out(c, x));
+    Verdict f = links_follow(c, sd, eqs, "solve (elimination)", preferred);
+    if (f.kind == VerdictKind::Refuted || f.holds()) {
+      if (f.kind == VerdictKind::Refuted) f.detail += (f.detail.empty() ? "" : "; ") + v->reason;
+      return f;
+    }
+    return *v;
+  }
   // Nonlinear (or not uniquely solvable): substitute the claim back. The claim must be
   // `u = G` for an unknown u; each equation, with u = G and the other unknowns eliminated,
   // must reduce to an identity.

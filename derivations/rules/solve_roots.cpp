@@ -233,13 +233,26 @@ Verdict only_root(StepContext& c, const Unknowns& u, const std::vector<Eq>& eqs,
                   const std::vector<ex>& elim, std::string& note) {
   const ex& x = u.syms[which];
   const std::string name = c.text(u.out(c, x));
-  Reduction red = reduce(c, eqs, ex(0), elim, true);
-  if (red.resource_limit || red.degenerate)
-    return undecided("solve", "other roots are not excluded: the equations in " + name + " alone cannot be formed");
-  for (const auto& el : red.eliminated)
-    if (el.coef.has(x))
-      return undecided("solve", "other roots are not excluded: eliminating " + c.text(c.atoms.restore(u.out(c, el.var))) +
-                                    " divides by an expression in " + name);
+  // Eliminating an intermediate by dividing by an expression in x loses the roots where that
+  // expression vanishes -- unless it vanishes nowhere on the declared domain (J*b = ... with b
+  // positive). Otherwise another order of elimination is tried, without that division.
+  Reduction red;
+  Bans bans;
+  for (int attempt = 0;; ++attempt) {
+    red = reduce(c, eqs, ex(0), elim, true, bans);
+    if (red.resource_limit || red.degenerate)
+      return undecided("solve", "other roots are not excluded: the equations in " + name + " alone cannot be formed");
+    const Elimination* lossy = nullptr;
+    for (const auto& el : red.eliminated)
+      if (el.coef.has(x) && !detail::provably_nonzero(c.atoms.restore(u.out(c, el.coef)), c.d.symbols)) {
+        lossy = &el;
+        break;
+      }
+    if (!lossy) break;
+    if (attempt >= 3 || !bans.insert({lossy->equation, lossy->key}).second)
+      return undecided("solve", "other roots are not excluded: eliminating " +
+                                    c.text(c.atoms.restore(u.out(c, lossy->var))) + " divides by an expression in " + name);
+  }
   std::optional<RootsOutcome> first;
   for (const auto& l : red.leftover) {
     if (!l.e.has(x) || has_any(l.e, elim)) continue;

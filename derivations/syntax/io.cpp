@@ -51,12 +51,27 @@ std::string shown_name(const std::string& path) { return path.empty() ? "<empty 
 
 // --- inputs ------------------------------------------------------------------------------------
 
-InputFile::InputFile(const std::string& path) : path_(path) {
+InputFile::InputFile(const std::string& path, Streams streams) : path_(path) {
   if (path.empty()) cannot_read(path, "empty file name");
+  const bool stream_ok = streams == Streams::Allowed;
+  if (stream_ok && path == "-") {
+    struct stat st {};
+    if (::fstat(STDIN_FILENO, &st) == 0 && S_ISDIR(st.st_mode)) cannot_read(path, "the standard input is a directory");
+    fd_ = ::fcntl(STDIN_FILENO, F_DUPFD_CLOEXEC, 3);
+    if (fd_ < 0) cannot_read(path, "the standard input: " + errno_text(errno));
+    return;
+  }
   // Look before opening, so a device is never opened (opening some has side effects); fstat
   // below is the authority (the path may change in between).
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) cannot_read(path, errno_text(errno));
+  if (stream_ok && S_ISFIFO(st.st_mode)) {
+    do {
+      fd_ = ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_CLOEXEC);
+    } while (fd_ < 0 && errno == EINTR);
+    if (fd_ < 0) cannot_read(path, errno_text(errno));
+    return;
+  }
   if (!S_ISREG(st.st_mode)) {
     if (S_ISDIR(st.st_mode)) cannot_read(path, "it is a directory; expected a file");
     cannot_read(path, "it is " + file_kind(st.st_mode) + "; only regular files are read");

@@ -28,7 +28,10 @@ constexpr std::size_t kMaxInputLineBytes = std::size_t{1} << 20;    // one line 
 // the file ("path: error: cannot read 'path': reason").
 class InputFile {
  public:
-  explicit InputFile(const std::string& path);
+  // Only regular files are opened, unless streams are allowed: then "-" is the standard input
+  // and a named pipe (`/dev/stdin` on a pipe) is read too. A stream is read once, front to back.
+  enum class Streams { Refused, Allowed };
+  explicit InputFile(const std::string& path, Streams streams = Streams::Refused);
   ~InputFile();
   InputFile(const InputFile&) = delete;
   InputFile& operator=(const InputFile&) = delete;

@@ -47,11 +47,34 @@ InputError::InputError(SourcePos pos, std::string message, int length, std::stri
       line_text_(std::move(line_text)) {}
 
 InputError InputError::with_line_text(std::string text) const {
-  return InputError(pos_, message_, length_, std::move(text));
+  InputError e(pos_, message_, length_, std::move(text));
+  e.severity_ = severity_;
+  return e;
+}
+
+InputError InputError::warning(SourcePos pos, std::string message, int length, std::string line_text) {
+  InputError e(std::move(pos), std::move(message), length, std::move(line_text));
+  e.severity_ = Severity::Warning;
+  return e;
+}
+
+InputError InputError::note(SourcePos pos, std::string message, int length, std::string line_text) {
+  InputError e(std::move(pos), std::move(message), length, std::move(line_text));
+  e.severity_ = Severity::Note;
+  return e;
+}
+
+const char* InputError::severity_word() const {
+  switch (severity_) {
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+    case Severity::Error: break;
+  }
+  return "error";
 }
 
 std::string InputError::format() const {
-  std::string out = where(pos_) + ": error: " + message_ + "\n";
+  std::string out = where(pos_) + ": " + severity_word() + ": " + message_ + "\n";
   if (!line_text_.empty() && pos_.col >= 1) {
     // Show at most 200 characters around the column so huge inputs stay readable.
     std::size_t col = static_cast<std::size_t>(pos_.col - 1);

@@ -41,6 +41,14 @@ class InputError : public std::runtime_error {
   int length() const { return length_; }
   const std::string& line_text() const { return line_text_; }
   InputError with_line_text(std::string text) const;
+  // A positioned message that stops nothing and does not change the exit code, reported beside
+  // what it concerns: a warning (something is probably not what the author meant) or a note
+  // (what the checker took a name to mean). "file:line:col: warning: message".
+  enum class Severity { Error, Warning, Note };
+  static InputError warning(SourcePos pos, std::string message, int length = 1, std::string line_text = {});
+  static InputError note(SourcePos pos, std::string message, int length = 1, std::string line_text = {});
+  Severity severity() const { return severity_; }
+  const char* severity_word() const;
   // "file:line:col: error: message" plus, when line_text is known, the line and a caret.
   std::string format() const;
 
@@ -49,6 +57,7 @@ class InputError : public std::runtime_error {
   std::string message_;
   int length_;
   std::string line_text_;
+  Severity severity_ = Severity::Error;
 };
 
 }  // namespace dc

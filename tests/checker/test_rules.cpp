@@ -20,7 +20,8 @@ bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p,
 
 TEST_CASE("every rule accepts its true steps and refutes its false ones", "[rules]") {
   std::string file = GENERATE(as<std::string>{}, "rewrite", "substitute", "solve", "solve_roots", "limit", "limit_forms", "series", "series_order",
-                              "first_order", "differentiate", "integrate", "solves_ode", "definition", "bound_variables", "functions_at_points", "named_results");
+                              "first_order", "differentiate", "integrate", "solves_ode", "definition", "bound_variables", "functions_at_points", "named_results",
+                              "chain_names", "solve_free");
   CAPTURE(file);
   dc::Derivation d = dc::load_derivation(data("rules/" + file + ".dc"));
   dc::CheckSummary sum = dc::check_derivation(d);
@@ -47,6 +48,50 @@ TEST_CASE("every rule accepts its true steps and refutes its false ones", "[rule
   }
   CHECK(ok >= 1);
   CHECK(bad >= 1);
+}
+
+TEST_CASE("a name a step introduces is stated in the report, and a premise using a bound name is warned about",
+          "[rules][names]") {
+  dc::Derivation d = dc::load_derivation(data("rules/chain_names.dc"));
+  dc::CheckSummary sum = dc::check_derivation(d);
+  dc::FileReport f;
+  f.file = "chain_names.dc";
+  f.derivation = d;
+  f.summary = sum;
+  const std::string text = dc::format_text({f}, {});
+  CHECK(text.find("introduces: W = integral(k*s, s, 0, L), for the steps after it") != std::string::npos);
+  CHECK(text.find("introduces: I_G = integral(") != std::string::npos);
+  // a refuted chain whose first side is fresh says how to define the name
+  CHECK(text.find("'K' appears in no earlier step, so nothing determines it: only a definition introduces a name "
+                  "(write 'K = a*b + a*b  by definition'") != std::string::npos);
+  // the fresh-symbol chains introduce nothing
+  CHECK(text.find("introduces: K") == std::string::npos);
+  CHECK(text.find("introduces: p2") == std::string::npos);
+  // the premise after the rod's named result says which value I_G is, at the name
+  const dc::Step* law = d.find("parallel_axis");
+  REQUIRE(law);
+  REQUIRE(law->diagnostics.size() == 1);
+  CHECK(law->diagnostics[0].severity() == dc::InputError::Severity::Note);
+  CHECK(law->diagnostics[0].pos().col == law->claim_pos.col + 6);   // `I_O = I_G + ...`
+  CHECK(law->diagnostics[0].message().find("step 'ok_rod'") != std::string::npos);
+  CHECK(text.find(": note: 'I_G' here is the value that step 'ok_rod'") != std::string::npos);
+  // no other step is warned about
+  for (const auto& s : d.steps)
+    if (s.label != "parallel_axis") CHECK(s.diagnostics.empty());
+  const nlohmann::ordered_json j = dc::to_json({f}, {});
+  bool named = false, warned = false;
+  for (const auto& st : j["files"][0]["steps"]) {
+    if (st["label"] == "ok_named_undeclared") {
+      named = st.contains("introduces") && st["introduces"]["name"] == "W" &&
+              st["introduces"]["value"] == "integral(k*s, s, 0, L)";
+    }
+    if (st["label"] == "parallel_axis") warned = st.contains("diagnostics") && st["diagnostics"].size() == 1 && st["diagnostics"][0]["severity"] == "note";
+    if (st["label"] == "bad_fresh_chain") CHECK(!st.contains("introduces"));
+  }
+  CHECK(named);
+  CHECK(warned);
+  // warnings do not change the exit code: the file has refuted steps (exit 1), nothing more
+  CHECK(sum.exit_code(false) == dc::kExitRefuted);
 }
 
 TEST_CASE("solve reports what lsolve derived, deterministically", "[rules][solve]") {

@@ -67,3 +67,43 @@ TEST_CASE("claims: a constant-false assume gives that line an error verdict, the
   CHECK((fine.find(R"("verdict":"proved")") != std::string::npos ||
          fine.find(R"("verdict":"holds_numerically")") != std::string::npos));
 }
+
+TEST_CASE("a malformed assumption is exit 2 at its bracket, never dropped", "[cli][assumptions]") {
+  // Dropping `x in [0,1` would check the claim for every real x and refute it outside [0, 1].
+  struct Case {
+    const char* assume;
+    const char* prefix;
+  };
+  auto c = GENERATE(values<Case>({
+      {"x in [0,1", "<assume>:1:6: error: unclosed '['"},
+      {"x > 0, y in (0, 2", "<assume>:1:13: error: unclosed '('"},
+      {"x in 0, 1]", "<assume>:1:10: error: unmatched ']'"},
+      {"x > 0)", "<assume>:1:6: error: unmatched ')'"},
+  }));
+  Run r = run({"equal", "sqrt(x^2)", "x", "--assume", c.assume});
+  CAPTURE(c.assume, r.out, r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.out.empty());
+  CHECK(r.err.rfind(c.prefix, 0) == 0);
+  CHECK(r.err.find('^') != std::string::npos);
+}
+
+TEST_CASE("a malformed assumption in a claim line is that line's error, the other lines are checked",
+          "[cli][assumptions]") {
+  std::string file = "derivcheck_cli_malformed_assume_" + std::to_string(::getpid()) + ".jsonl";
+  {
+    std::ofstream f(file);
+    f << R"J({"kind":"equal","lhs":"sqrt(x^2)","rhs":"x","assume":"x in [0,1"})J" << "\n";
+    f << R"J({"kind":"equal","lhs":"sqrt(x^2)","rhs":"x","assume":"x in [0,1]"})J" << "\n";
+  }
+  Run r = run({"claims", file, "--no-timings"});
+  std::remove(file.c_str());
+  CAPTURE(r.out, r.err);
+  CHECK(r.exit_code == 2);
+  const auto lines = lines_of(r.out);
+  REQUIRE(lines.size() == 2);
+  CHECK(lines[0].find("\"verdict\":\"error\"") != std::string::npos);
+  CHECK(lines[0].find("unclosed '['") != std::string::npos);
+  CHECK((lines[1].find("\"verdict\":\"proved\"") != std::string::npos ||
+         lines[1].find("\"verdict\":\"holds_numerically\"") != std::string::npos));
+}

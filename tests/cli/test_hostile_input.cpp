@@ -260,7 +260,7 @@ TEST_CASE("inputs that are not regular files are clear errors, never a hang or 0
     CHECK(d.out.find("pipe.dc: error: cannot read") != std::string::npos);
   }
   SECTION("claims") {
-    for (const auto& p : std::vector<std::string>{dir, fifo, "/dev/zero", "/proc/self/mem"}) {
+    for (const auto& p : std::vector<std::string>{dir, "/dev/zero", "/proc/self/mem"}) {
       CAPTURE(p);
       Run r = run({"claims", p}, 20);
       CHECK(r.exit_code == 2);
@@ -269,6 +269,25 @@ TEST_CASE("inputs that are not regular files are clear errors, never a hang or 0
     }
     CHECK(run({"claims", dir}).err.find("it is a directory; expected a file") != std::string::npos);
     Run e = run({"claims", t.file("empty.jsonl", "\n\n")});
+    CHECK(e.exit_code == 2);
+    CHECK(e.err.find("no claims") != std::string::npos);
+  }
+  SECTION("a claim bank is read from the standard input ('-') or a named pipe") {
+    const std::string bank = t.file("bank.jsonl",
+                                    "{\"kind\":\"equal\",\"lhs\":\"(x+1)^2\",\"rhs\":\"x^2+2*x+1\"}\n"
+                                    "{\"kind\":\"equal\",\"lhs\":\"x\",\"rhs\":\"x+1\"}\n");
+    auto check_results = [](const Run& r) {
+      CHECK(r.exit_code == 1);   // the second claim is refuted
+      const auto lines = cli_test::lines_of(r.out);
+      REQUIRE(lines.size() == 2);
+      CHECK(lines[0].find("\"line\":1,") != std::string::npos);
+      CHECK(lines[0].find("\"verdict\":\"proved\"") != std::string::npos);
+      CHECK(lines[1].find("\"verdict\":\"refuted\"") != std::string::npos);
+    };
+    check_results(run({"claims", "-", "--no-timings"}, 20, "cat " + bank + " | "));
+    check_results(run({"claims", fifo, "--no-timings"}, 20, "cat " + bank + " > " + fifo + " & "));
+    // an empty stream has no claims: an input error, as for an empty file
+    Run e = run({"claims", "-"}, 20, "true | ");
     CHECK(e.exit_code == 2);
     CHECK(e.err.find("no claims") != std::string::npos);
   }

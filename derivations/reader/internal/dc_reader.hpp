@@ -114,6 +114,7 @@ class DcReader {
   std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
   std::map<std::string, std::size_t> defined_;   // labels defined so far -> step index
   std::set<std::string> used_names_;             // identifiers in the claims of the steps so far
+  std::map<std::string, std::size_t> named_results_;   // name -> index of the step whose named result bound it
   std::string rule_name_;                        // the rule line being read (as written)
   std::optional<SourcePos> first_assume_;
   std::string current_label_;                    // the step being read
@@ -161,6 +162,8 @@ class DcReader {
   void step_statement(const Statement& st, const Header& h);
   void order_term(Step& step);
   bool names_new_quantity(const Step& step) const;
+  bool names_operation_result(const Step& step) const;
+  void note_bound_names(Step& step) const;
   void validate_side(const Node& n);
   static bool contains_integral(const Node& n);
   static std::string normalise_ws(const std::string& t);
