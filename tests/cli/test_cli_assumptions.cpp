@@ -3,6 +3,10 @@
 // assumptions with large values are accepted. Runs the built binary DERIVCHECK_CLI.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
 #include "cli_run.hpp"
 
 using namespace cli_test;
@@ -106,4 +110,26 @@ TEST_CASE("a malformed assumption in a claim line is that line's error, the othe
   CHECK(lines[0].find("unclosed '['") != std::string::npos);
   CHECK((lines[1].find("\"verdict\":\"proved\"") != std::string::npos ||
          lines[1].find("\"verdict\":\"holds_numerically\"") != std::string::npos));
+}
+
+TEST_CASE("a refutation reports a point of ordinary size when one refutes", "[cli][assumptions][evidence]") {
+  // Without a preference the first certified point had m ~ 1e-10, where both sides agree to
+  // fourteen digits: true evidence that tells the reader nothing.
+  auto c = GENERATE(values<std::vector<std::string>>({
+      {"3*m*v0*b/(M*L^2)", "3*m*v0*b/(M*L^2 + 3*m*b^2)", "m>0, M>0, L>0, b>0, v0>0, b <= L"},
+      {"x/(x + y)", "x/(x + 2*y)", "x > 0, y > 0, y < x"},
+      {"sqrt(a^2 + b^2)", "a + b", "a > 0, b > 0, a <= 2*b"},
+  }));
+  Run r = run({"equal", c[0], c[1], "--assume", c[2], "--json"});
+  CAPTURE(c[0], c[1], c[2], r.out, r.err);
+  REQUIRE(r.exit_code == 1);
+  const auto j = nlohmann::json::parse(r.out);
+  REQUIRE(j.contains("counterexample"));
+  for (const auto& [name, value] : j["counterexample"].items()) {
+    const std::string t = value.get<std::string>();
+    const auto slash = t.find('/');
+    const double x = slash == std::string::npos ? std::stod(t) : std::stod(t.substr(0, slash)) / std::stod(t.substr(slash + 1));
+    CAPTURE(name, t);
+    CHECK((x == 0 || (std::abs(x) >= 1e-2 && std::abs(x) <= 1e2)));
+  }
 }
