@@ -40,6 +40,24 @@ Verdict differentiate(StepContext& c, const Relation& claim) {
       originals.push_back(q);
       if (has_application_at(q.e, t)) eqs.push_back({q.e.diff(ts), ex(), q.from});
     }
+  // A name defined through t (`p = (m0 + k*t)*u  by definition`, `H(t) = ...`) is a function
+  // of t: every use of it in the claim is its definition, so the claim's own derivative
+  // carries the reference (its equation is an identity once the name is resolved).
+  std::string through_t;
+  for (const auto& a : rule.refs) {
+    if (a.kind != RuleArg::Kind::Label) continue;
+    const Step& r = c.ref_step(a);
+    if (r.rule.name == "definition" && introduces_name(r) && c.conv(r.claim.sides[1]).has(t))
+      through_t += std::string(through_t.empty() ? "" : "; ") + to_text(r.claim.sides[0]) + " is a function of " +
+                   c.text(t) + " by its definition " + r.label;
+  }
+  if (eqs.empty() && !through_t.empty()) {
+    std::vector<ex> sd = c.sides(claim);
+    if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by differentiate' must be an equation");
+    Verdict v = links_follow(c, sd, originals, "differentiate");
+    v.detail += (v.detail.empty() ? "" : "; ") + through_t;
+    return v;
+  }
   if (eqs.empty()) {
     const RuleArg& a = rule.refs[0];
     c.fail(a.pos, "'" + a.label + "' contains no function of " + c.text(t) +
