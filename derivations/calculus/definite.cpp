@@ -8,6 +8,7 @@
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/decide/prove.hpp"
 #include "derivations/kernel/range.hpp"
+#include "derivations/kernel/sign.hpp"
 #include "derivations/calculus/antiderivative.hpp"
 
 namespace dc::integrals {
@@ -19,6 +20,7 @@ using namespace GiNaC;
 struct End {
   ex at;
   int inf = 0;   // -1: -oo, +1: +oo
+  bool closed = false;   // the end itself belongs to the interval examined
 };
 
 // ---- Sturm's theorem for polynomials in x with rational coefficients -------------------------
@@ -49,33 +51,10 @@ int sign_at(const ex& s, const symbol& x, const End& t) {
 }
 
 // Does p have a real root in the open interval (lo, hi)? p with rational coefficients, ends
-// rational or infinite.
-bool root_inside(ex p, const symbol& x, const End& lo, const End& hi) {
-  p = p.expand();
-  if (p.degree(x) < 1) return false;
-  p = quo(p, gcd(p, p.diff(x)), x).expand();   // square-free: roots counted once
-  for (const End* e : {&lo, &hi})
-    if (e->inf == 0)
-      while (p.degree(x) >= 1 && p.subs(x == e->at).is_zero()) p = quo(p, x - e->at, x).expand();
-  if (p.degree(x) < 1) return false;
-  std::vector<ex> seq = {p, p.diff(x).expand()};
-  for (;;) {
-    const ex r = (-rem(seq[seq.size() - 2], seq.back(), x)).expand();
-    if (r.is_zero()) break;
-    seq.push_back(r);
-    if (r.degree(x) == 0) break;
-  }
-  auto variations = [&](const End& t) {
-    int v = 0, last = 0;
-    for (const ex& s : seq) {
-      const int sg = sign_at(s, x, t);
-      if (sg == 0) continue;
-      if (last != 0 && sg != last) ++v;
-      last = sg;
-    }
-    return v;
-  };
-  return variations(lo) - variations(hi) > 0;
+// rational or infinite (Sturm's theorem, kernel/sign.hpp).
+bool root_inside(const ex& p, const symbol& x, const End& lo, const End& hi) {
+  return kernel::sturm_root_inside(p, x, lo.inf ? numeric(0) : ex_to<numeric>(lo.at), lo.inf < 0,
+                                   hi.inf ? numeric(0) : ex_to<numeric>(hi.at), hi.inf > 0);
 }
 
 End interior_point(const End& lo, const End& hi) {
@@ -151,8 +130,9 @@ SymbolTable restricted(const SymbolTable& ctx, const symbol& x, const End& lo, c
     return n.is_zero() ? 0 : n > 0 ? 1 : -1;
   };
   const auto lo_sign = numeric_sign(lo), hi_sign = numeric_sign(hi);
-  if (hi.inf && lo_sign && *lo_sign >= 0) t.narrow_domain(name, Domain::positive());
-  else if (lo.inf && hi_sign && *hi_sign <= 0) t.narrow_domain(name, Domain::negative());
+  // x > lo >= 0 (whatever hi is) or x < hi <= 0
+  if (lo_sign && *lo_sign >= 0) t.narrow_domain(name, Domain::positive());
+  else if (hi_sign && *hi_sign <= 0) t.narrow_domain(name, Domain::negative());
   else t.narrow_domain(name, Domain::real());
   if (lo.inf == 0) t.add_constraint({x, lo.at, Constraint::Op::Gt, name + " > lower limit", {}});
   if (hi.inf == 0) t.add_constraint({x, hi.at, Constraint::Op::Lt, name + " < upper limit", {}});
@@ -195,6 +175,8 @@ std::optional<std::string> guaranteed(const Condition& c, const symbol& x, const
   }
   if (c.e.has(x) && rational_univariate(c.e, x) && rational_end(lo) && rational_end(hi)) {
     if (root_inside(c.e, x, lo, hi)) return std::nullopt;
+    for (const End* e : {&lo, &hi})
+      if (e->closed && e->inf == 0 && sign_at(c.e, x, *e) == 0) return std::nullopt;
     if (!c.positive) return std::string("no root inside (Sturm)");
     if (sign_at(c.e, x, interior_point(lo, hi)) > 0) return std::string("no root inside and positive (Sturm)");
     return std::nullopt;
@@ -205,6 +187,56 @@ std::optional<std::string> guaranteed(const Condition& c, const symbol& x, const
   for (const auto& sc : conds)
     if (sc.status != SideCondition::Status::Guaranteed) return std::nullopt;
   return conds.front().evidence;
+}
+
+// Limits a and b in an order the declarations leave open: every point between them lies in the
+// hull of their ranges, an interval with rational or infinite ends; x ranges over it in the
+// table returned (a superset where the hull has an end other than 0 and oo). nullopt when the
+// hull is the whole line.
+struct Hull {
+  End lo, hi;
+  SymbolTable table;
+  std::string text;
+};
+std::optional<Hull> hull_of_limits(const ex& a, const ex& b, const symbol& x, const SymbolTable& ctx) {
+  const detail::Range ra = detail::range_of(a, ctx), rb = detail::range_of(b, ctx);
+  End lo{0, 0}, hi{0, 0};
+  if (ra.lo_inf || rb.lo_inf) lo.inf = -1;
+  else {
+    const bool a_lower = ra.lo < rb.lo || (ra.lo == rb.lo && !ra.lo_open);
+    lo.at = a_lower ? ra.lo : rb.lo;
+    lo.closed = a_lower ? !ra.lo_open : !rb.lo_open;
+  }
+  if (ra.hi_inf || rb.hi_inf) hi.inf = +1;
+  else {
+    const bool a_upper = ra.hi > rb.hi || (ra.hi == rb.hi && !ra.hi_open);
+    hi.at = a_upper ? ra.hi : rb.hi;
+    hi.closed = a_upper ? !ra.hi_open : !rb.hi_open;
+  }
+  if (lo.inf && hi.inf) return std::nullopt;
+  Hull h{lo, hi, ctx, ""};
+  const SymbolInfo* info = ctx.find(x);
+  if (!info) {
+    SymbolInfo si;
+    si.name = x.get_name();
+    si.sym = x;
+    si.domain = Domain::real();
+    info = &h.table.declare(si);
+  }
+  Domain d = Domain::real();
+  const numeric l = ex_to<numeric>(lo.at), u = ex_to<numeric>(hi.at);
+  if (!lo.inf && !hi.inf) d = Domain::interval(lo.at, !lo.closed, hi.at, !hi.closed);
+  else if (!lo.inf && (l > 0 || (l.is_zero() && !lo.closed))) d = Domain::positive();
+  else if (!lo.inf && l.is_zero()) d = Domain::nonnegative();
+  else if (!hi.inf && (u < 0 || (u.is_zero() && !hi.closed))) d = Domain::negative();
+  h.table.narrow_domain(info->name, d);
+  auto end = [](const End& e, bool lower) {
+    if (e.inf) return std::string(lower ? "(-oo" : "oo)");
+    const std::string v = detail::exact_text(ex_to<numeric>(e.at));
+    return lower ? (e.closed ? "[" : "(") + v : v + (e.closed ? "]" : ")");
+  };
+  h.text = end(lo, true) + ", " + end(hi, false);
+  return h;
 }
 
 std::string end_text(const End& e, const SymbolTable& t) {
@@ -249,8 +281,22 @@ Definite definite_integral(const ex& f, const symbol& x, const ex& a, int a_inf,
       std::string why;
       const std::optional<ex> F = antiderivative(f, x, ctx, &why);
       std::vector<Condition> conds;
+      const bool collected = F && collect(f, x, conds) && collect(*F, x, conds);
+      // first the interval that holds both limits (a, b positive: (0, oo)), then the whole line
+      if (const auto h = collected ? hull_of_limits(a, b, x, ctx) : std::nullopt) {
+        bool continuous = true;
+        for (std::size_t i = 0; continuous && i < conds.size(); ++i)
+          continuous = guaranteed(conds[i], x, h->lo, h->hi, h->table).has_value();
+        if (continuous) {
+          out.kind = Definite::Kind::Value;
+          out.value = F->subs(x == b) - F->subs(x == a);
+          out.evidence = "antiderivative " + print_text(*F, ctx) + " (d/d" + x.get_name() +
+                         " proved), continuous on " + h->text + ", which holds both limits by the declarations";
+          return out;
+        }
+      }
       const SymbolTable line = restricted(ctx, x, End{0, -1}, End{0, +1});
-      bool continuous = F && collect(f, x, conds) && collect(*F, x, conds);
+      bool continuous = collected;
       for (std::size_t i = 0; continuous && i < conds.size(); ++i)
         continuous = guaranteed(conds[i], x, End{0, -1}, End{0, +1}, line).has_value();
       if (!continuous) {

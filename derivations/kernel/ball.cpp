@@ -2,6 +2,7 @@
 // node returns a status and, for Value, an arb ball that contains the true real value.
 #include "derivations/kernel/ball.hpp"
 #include "derivations/kernel/ball_impl.hpp"
+#include "derivations/kernel/ball_box.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -124,7 +125,8 @@ constexpr long kMaxExpBits = 1L << 26;
 
 class BallEvaluator {
  public:
-  explicit BallEvaluator(long prec, const GiNaC::exmap* point = nullptr) : prec_(prec), point_(point) {}
+  explicit BallEvaluator(long prec, const GiNaC::exmap* point = nullptr, const Box* box = nullptr)
+      : prec_(prec), point_(point), box_(box) {}
   std::string why;
 
   BallStatus eval(const ex& e, arb_t out) {
@@ -162,6 +164,17 @@ class BallEvaluator {
         auto it = point_->find(e);
         if (it != point_->end()) return eval(it->second, out);
       }
+      if (box_) {
+        auto it = box_->find(e);
+        if (it != box_->end()) {
+          // the whole interval [lo, hi] as one ball
+          Tmp lo, hi;
+          if (number(it->second.first, lo.v) != BallStatus::Value || number(it->second.second, hi.v) != BallStatus::Value)
+            return unknown("a box with a non-real end");
+          arb_union(out, lo.v, hi.v, prec_);
+          return BallStatus::Value;
+        }
+      }
       return unknown("a symbol without a value");
     }
     return unknown("an expression that is not a number");
@@ -170,6 +183,7 @@ class BallEvaluator {
  private:
   long prec_;
   const GiNaC::exmap* point_;
+  const Box* box_;
 
   struct Tmp {
     arb_t v;
@@ -329,6 +343,8 @@ class BallEvaluator {
       if (sx == BallStatus::NotReal || sx == BallStatus::Pole) return sx;
       if (sy != BallStatus::Value || sx != BallStatus::Value) return BallStatus::Unknown;
       if (arb_is_zero(x.v) && arb_is_zero(y.v)) return pole("atan2(0, 0)");
+      // over a box atan2 may jump across its cut: only a positive x is continuous there
+      if (box_ && !arb_is_positive(x.v)) return unknown("atan2 over a box that reaches x <= 0");
       // on the branch cut (x < 0, y = 0) only an exact y = 0 is decided
       if (!arb_is_positive(x.v) && arb_contains_zero(y.v) && !arb_is_zero(y.v))
         return unknown("atan2 near its branch cut");
@@ -502,6 +518,22 @@ Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) {
   b.why = ev.why;
   return b;
 }
+
+Ball enclose_box(const ex& e, const Box& box, long prec_bits) {
+  Ball b;
+  b.prec_bits = prec_bits;
+  BallEvaluator ev(prec_bits, nullptr, &box);
+  try {
+    b.status = ev.eval(e, b.impl->v);
+  } catch (const std::exception&) {
+    b.status = BallStatus::Unknown;
+    ev.why = "evaluation failed";
+  }
+  b.why = ev.why;
+  return b;
+}
+
+bool certainly_nonnegative(const Ball& b) { return b.status == BallStatus::Value && arb_is_nonnegative(b.impl->v); }
 
 Ball enclose_sign(const ex& constant, long start_bits, long max_bits) {
   return enclose_sign_at(constant, nullptr, start_bits, max_bits);

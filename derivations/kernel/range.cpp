@@ -8,6 +8,7 @@
 #include <cln/rational.h>
 #include <cln/real.h>
 
+#include "derivations/kernel/sign.hpp"
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/symbolic/verdict.hpp"
@@ -191,6 +192,10 @@ Range int_power_range(const Range& b, long n) {
 
 Range range_rec(const ex& e, const SymbolTable& ctx);
 
+// range_where_defined is running: ranges hold where the expression is real (a fractional
+// power's base need not be nonnegative everywhere).
+thread_local bool g_where_defined = false;
+
 Range function_range(const GiNaC::function& f, const SymbolTable& ctx) {
   const std::string name = f.get_name();
   auto rat = [](long p, long q) { return numeric(p, q); };
@@ -220,6 +225,36 @@ Range function_range(const GiNaC::function& f, const SymbolTable& ctx) {
     }
     if (pos) return make_range(false, 0, true, false, 1, false);
     return make_range(false, -1, false, false, 1, false);
+  }
+  if (name == "tan") {
+    // increasing on (-pi/2, pi/2): an argument range inside it gives (tan(lo), tan(hi)), the
+    // ends enclosed outward (an exact 0 stays exact); an end at +-pi/2 (open) gives +-oo
+    Range a = range_rec(f.op(0), ctx);
+    if (a.lo_inf || a.hi_inf) return Range::all();
+    numeric half_pi;
+    {
+      DigitsGuard g(40);
+      half_pi = GiNaC::ex_to<numeric>((GiNaC::Pi / 2).evalf());
+    }
+    const numeric eps = pow10(-28);
+    const bool lo_at_pole = GiNaC::abs(a.lo + half_pi) <= eps, hi_at_pole = GiNaC::abs(a.hi - half_pi) <= eps;
+    if ((lo_at_pole && !a.lo_open) || (hi_at_pole && !a.hi_open)) return Range::all();
+    if (!lo_at_pole && a.lo < -half_pi) return Range::all();
+    if (!hi_at_pole && a.hi > half_pi) return Range::all();
+    Range r;
+    r.lo_inf = lo_at_pole;
+    r.hi_inf = hi_at_pole;
+    if (!r.lo_inf) {
+      const Range c = a.lo.is_zero() ? point_range(0) : constant_range(GiNaC::tan(ex(a.lo)));
+      if (c.lo_inf) return Range::all();
+      r.lo = c.lo, r.lo_open = a.lo.is_zero() && a.lo_open;
+    }
+    if (!r.hi_inf) {
+      const Range c = a.hi.is_zero() ? point_range(0) : constant_range(GiNaC::tan(ex(a.hi)));
+      if (c.hi_inf) return Range::all();
+      r.hi = c.hi, r.hi_open = a.hi.is_zero() && a.hi_open;
+    }
+    return r;
   }
   if (name == "tanh") return make_range(false, -1, false, false, 1, false);
   if (name == "atan") return make_range(false, rat(-15708, 10000), true, false, rat(15708, 10000), true);
@@ -273,6 +308,9 @@ Range range_rec(const ex& e, const SymbolTable& ctx) {
       }
       if (n.is_rational()) {
         bool pos = n.is_positive();
+        // where it is defined, a real fractional power is >= 0 (> 0 with a negative exponent)
+        if (g_where_defined && !b.nonnegative())
+          return make_range(false, 0, !pos, true, 0, true);
         if (pos && !b.lo_inf && !b.lo.is_negative() && !b.hi_inf && b.hi <= 1)
           return make_range(false, 0, b.positive(), false, 1, b.hi_open);
         if (b.positive()) return make_range(false, 0, true, true, 0, true);
@@ -298,15 +336,26 @@ Range range_of(const ex& e, const SymbolTable& ctx) {
   }
 }
 
+Range range_where_defined(const ex& e, const SymbolTable& ctx) {
+  struct Flag {
+    bool saved = g_where_defined;
+    Flag() { g_where_defined = true; }
+    ~Flag() { g_where_defined = saved; }
+  } flag;
+  return range_of(e, ctx);
+}
+
 bool provably_positive(const ex& e, const SymbolTable& ctx) {
   if (range_of(e, ctx).positive()) return true;
-  return e.info(GiNaC::info_flags::positive);
+  if (e.info(GiNaC::info_flags::positive)) return true;
+  return kernel::decide_sign_by_sturm(e, kernel::SignWant::Positive, ctx).has_value();
 }
 
 bool provably_nonzero(const ex& e, const SymbolTable& ctx) {
   if (GiNaC::is_a<numeric>(e)) return !GiNaC::ex_to<numeric>(e).is_zero();
   if (range_of(e, ctx).nonzero()) return true;
-  return e.info(GiNaC::info_flags::positive) || e.info(GiNaC::info_flags::negative);
+  if (e.info(GiNaC::info_flags::positive) || e.info(GiNaC::info_flags::negative)) return true;
+  return kernel::decide_sign_by_sturm(e, kernel::SignWant::Nonzero, ctx).has_value();
 }
 
 bool provably_real(const ex& e, const SymbolTable& ctx) {

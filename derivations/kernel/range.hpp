@@ -23,6 +23,10 @@ struct Range {
   std::string to_string() const;
 };
 Range range_of(const GiNaC::ex& e, const SymbolTable& ctx);
+// The same over the points where e is real: a fractional power counts as >= 0 whatever its
+// base (sqrt(a^2 - b) + a > 0 for a positive, wherever it is real). For side conditions, each
+// of which comes with the conditions of its own parts (a^2 - b >= 0 here).
+Range range_where_defined(const GiNaC::ex& e, const SymbolTable& ctx);
 
 // Sign facts that the domains (and GiNaC's info flags) make evident.
 bool provably_positive(const GiNaC::ex& e, const SymbolTable& ctx);

@@ -3,6 +3,7 @@
 
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/kernel/range.hpp"
+#include "derivations/kernel/sign.hpp"
 #include "derivations/rules/context.hpp"
 
 namespace dc::rules {
@@ -100,6 +101,8 @@ Verdict sign_holds(const ex& g, bool strict, const std::string& what, const Symb
   }
   if (strict ? detail::provably_positive(g, t) : detail::range_of(g, t).nonnegative())
     return proved("value in the declared domain", what + " (signs of the declarations)");
+  if (auto how = kernel::decide_sign(g, strict ? kernel::SignWant::Positive : kernel::SignWant::Nonnegative, t))
+    return proved("value in the declared domain", what + " (" + *how + ")");
   Verdict r = prove_equal(GiNaC::sqrt(GiNaC::pow(g, 2)), g, t, opt);
   r.method = prefix_method("value in the declared domain", r.method);
   return r;
