@@ -7,6 +7,7 @@
 #include <functional>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "derivations/symbolic/printer.hpp"
@@ -15,6 +16,8 @@
 #include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball.hpp"
 #include "derivations/kernel/probe.hpp"
+#include "derivations/kernel/sign.hpp"
+#include "derivations/decide/common_domain.hpp"
 
 namespace dc {
 
@@ -70,7 +73,67 @@ ex log_atom(const ex& a, const SymbolTable& ctx) {
     return GiNaC::log(a);
   }
   if (is_fn(a, "exp") && detail::provably_real(a.op(0), ctx)) return a.op(0);
+  // log(tan(u)) = log(sin(u)) - log(cos(u)) where both are positive
+  if (is_fn(a, "tan") && detail::provably_positive(GiNaC::sin(a.op(0)), ctx) &&
+      detail::provably_positive(GiNaC::cos(a.op(0)), ctx))
+    return GiNaC::log(GiNaC::sin(a.op(0))) - GiNaC::log(GiNaC::cos(a.op(0)));
   return GiNaC::log(a);
+}
+
+// n^(k/q) for a positive integer n and 0 < k/q < 1: the q-th powers inside n taken out
+// (12^(1/2) = 2*3^(1/2)), by trial division up to 10^6; nullopt when n is larger.
+std::optional<ex> integer_radical(const numeric& n, const numeric& r) {
+  if (!n.is_pos_integer() || n > numeric("1000000000000")) return std::nullopt;
+  long v = n.to_long();
+  const long k = r.numer().to_long(), q = r.denom().to_long();
+  numeric out_part = 1, in_part = 1;
+  auto take = [&](long p, long e) {
+    const long total = e * k;   // p^(e k / q) = p^(total / q)
+    out_part *= GiNaC::pow(numeric(p), numeric(total / q));
+    in_part *= GiNaC::pow(numeric(p), numeric(total % q));
+  };
+  for (long p = 2; p * p <= v; ++p) {
+    long e = 0;
+    while (v % p == 0) v /= p, ++e;
+    if (e) take(p, e);
+  }
+  if (v > 1) take(v, 1);
+  return out_part * GiNaC::pow(ex(in_part), numeric(1, q));
+}
+
+// b^r for a rational r that is not an integer, with the factors whose sign the declarations
+// fix taken out: (c*y)^r = c^r * y^r for c > 0 (the principal branch: arg(c*y) = arg(y)),
+// (f^k)^r = f^(k r) for f > 0 and real k, and rational c reduced (sqrt(12) = 2*sqrt(3)).
+ex power_split(const ex& b, const numeric& r, const SymbolTable& ctx) {
+  auto atom = [&](const ex& f) -> std::optional<ex> {   // f^r when f > 0 gives a simpler form
+    if (GiNaC::is_a<numeric>(f)) {
+      const numeric& c = GiNaC::ex_to<numeric>(f);
+      if (!c.is_rational() || !c.is_positive()) return std::nullopt;
+      // r = wi + frac with wi an integer and 0 < frac < 1
+      const numeric wi = GiNaC::iquo(r.numer(), r.denom()) - (r.is_negative() ? 1 : 0);
+      const numeric frac = r - wi;
+      auto num = integer_radical(c.numer(), frac), den = integer_radical(c.denom(), frac);
+      if (!num || !den) return std::nullopt;
+      return GiNaC::pow(ex(c), wi) * *num / *den;
+    }
+    if (GiNaC::is_a<GiNaC::power>(f) && detail::provably_positive(f.op(0), ctx) && detail::provably_real(f.op(1), ctx))
+      return GiNaC::pow(f.op(0), f.op(1) * r);
+    if (detail::provably_positive(f, ctx)) return GiNaC::pow(f, r);
+    return std::nullopt;
+  };
+  if (!GiNaC::is_a<GiNaC::mul>(b)) {
+    const auto a = atom(b);
+    return a ? *a : GiNaC::pow(b, r);
+  }
+  ex out = 1, rest = 1;
+  bool split = false;
+  for (std::size_t i = 0; i < b.nops(); ++i) {
+    const auto a = atom(b.op(i));
+    if (a) out *= *a, split = true;
+    else rest *= b.op(i);
+  }
+  if (!split) return GiNaC::pow(b, r);
+  return out * GiNaC::pow(rest, r);
 }
 
 // log(p * r) = log(p) + log(r) whenever p > 0 (the argument of p*r is that of r), so every
@@ -105,6 +168,9 @@ struct TranscendentalRewrite : GiNaC::map_function {
     if (e.nops() == 0) return e;
     ex m = e.map(*this);
     if (is_fn(m, "log")) return log_split(m.op(0), ctx);
+    if (GiNaC::is_a<GiNaC::power>(m) && GiNaC::is_a<numeric>(m.op(1)) &&
+        GiNaC::ex_to<numeric>(m.op(1)).is_rational() && !GiNaC::ex_to<numeric>(m.op(1)).is_integer())
+      return power_split(m.op(0), GiNaC::ex_to<numeric>(m.op(1)), ctx);
     if (is_fn(m, "exp")) {
       // exp(sum) = prod exp(term); exp(c*log(y)) = y^c (GiNaC defines y^c as exp(c log y)).
       ex arg = GiNaC::expand(m.op(0));
@@ -462,6 +528,21 @@ std::string condition_text(CondKind k, const ex& a, const SymbolTable& ctx) {
   return "";
 }
 
+// The condition with its argument divided by its positive numeric content (2*x - 2 > 0 is
+// x - 1 > 0), and for != 0 its sign chosen canonically.
+std::string condition_key(CondKind k, const ex& a) {
+  try {
+    ex e = GiNaC::expand(a);
+    const numeric c = e.integer_content();
+    if (!c.is_zero()) e = GiNaC::expand(e / c);
+    std::string t = detail::canon_text(e);
+    if (k == CondKind::Nonzero) t = std::min(t, detail::canon_text(GiNaC::expand(-e)));
+    return std::to_string(static_cast<int>(k)) + "|" + t;
+  } catch (const std::exception&) {
+    return std::to_string(static_cast<int>(k)) + "|" + detail::canon_text(a);
+  }
+}
+
 std::string domains_text(const ex& a, const SymbolTable& ctx) {
   std::string s;
   for (const auto& sym : detail::ordered_symbols(a, ctx)) {
@@ -517,12 +598,19 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
     sc.what = condition_text(rc.kind, rc.arg, ctx);
     sc.reason = rc.reason;
     if (by_text.count(sc.what)) continue;
-    detail::Range range = detail::range_of(rc.arg, ctx);
+    // each condition is listed with the conditions of its parts, so the range where the
+    // argument is real decides it
+    detail::Range range = detail::range_where_defined(rc.arg, ctx);
     bool guaranteed = false;
+    // (range analysis and GiNaC's flags here; Sturm and subdivision below, named in the evidence)
+    const detail::Range plain = detail::range_of(rc.arg, ctx);
+    const bool pos_flag = rc.arg.info(GiNaC::info_flags::positive);
     switch (rc.kind) {
-      case CondKind::Nonzero: guaranteed = detail::provably_nonzero(rc.arg, ctx); break;
-      case CondKind::Positive: guaranteed = detail::provably_positive(rc.arg, ctx); break;
-      case CondKind::Nonnegative: guaranteed = range.nonnegative() || detail::provably_positive(rc.arg, ctx); break;
+      case CondKind::Nonzero:
+        guaranteed = range.nonzero() || plain.nonzero() || pos_flag || rc.arg.info(GiNaC::info_flags::negative);
+        break;
+      case CondKind::Positive: guaranteed = range.positive() || plain.positive() || pos_flag; break;
+      case CondKind::Nonnegative: guaranteed = range.nonnegative() || plain.positive() || pos_flag; break;
       case CondKind::UnitInterval: guaranteed = range.within(-1, 1); break;
     }
     if (guaranteed) {
@@ -541,6 +629,19 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
     if (guaranteed) {
       by_text[sc.what] = sc;
       continue;
+    }
+    // Sturm sequences for a polynomial in one symbol, Arb subdivision on bounded domains
+    {
+      using W = kernel::SignWant;
+      const bool unit = rc.kind == CondKind::UnitInterval;
+      const ex arg = unit ? 1 - GiNaC::pow(rc.arg, 2) : rc.arg;
+      const W want = rc.kind == CondKind::Nonzero ? W::Nonzero : rc.kind == CondKind::Positive ? W::Positive : W::Nonnegative;
+      if (auto how = kernel::decide_sign(arg, want, ctx)) {
+        sc.status = SideCondition::Status::Guaranteed;
+        sc.evidence = "decided on the declared domain by " + *how;
+        by_text[sc.what] = sc;
+        continue;
+      }
     }
     if (detail::has_abstract_application(rc.arg)) {
       sc.status = SideCondition::Status::Unknown;
@@ -592,7 +693,21 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 
 // check_satisfiable lives in satisfiable.cpp.
 
+std::map<std::string, std::string> side_condition_keys(const ex& e, const SymbolTable& ctx) {
+  std::vector<RawCond> raw;
+  collect_conditions(e, raw);
+  std::map<std::string, std::string> out;
+  for (const RawCond& rc : raw) out.emplace(condition_text(rc.kind, rc.arg, ctx), condition_key(rc.kind, rc.arg));
+  return out;
+}
+
 std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTable& ctx, const std::string& free_of) {
+  GiNaC::lst parts;
+  return side_conditions_of_tree_parts(n, ctx, free_of, parts);
+}
+
+std::vector<SideCondition> side_conditions_of_tree_parts(const Node& n, const SymbolTable& ctx,
+                                                         const std::string& free_of, GiNaC::lst& parts_out) {
   GiNaC::lst parts;
   std::function<void(const Node&)> walk;
   std::function<bool(const Node&, const std::string&)> mentions = [&](const Node& m, const std::string& x) {
@@ -635,6 +750,7 @@ std::vector<SideCondition> side_conditions_of_tree(const Node& n, const SymbolTa
   };
   if (free_of.empty()) walk(n);
   else free_parts(n, free_of);
+  parts_out = parts;
   return side_conditions(parts, ctx);
 }
 

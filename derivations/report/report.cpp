@@ -71,6 +71,9 @@ std::string verdict_evidence(const Verdict& v, const std::string& indent) {
       out += indent + "left side = " + v.lhs_value + ", right side = " + v.rhs_value + "\n";
     if (!v.hint.empty()) out += indent + "hint: " + v.hint + "\n";
   }
+  // a claim that holds on the common domain of its sides says which assumption makes it hold
+  // everywhere (decide/common_domain.hpp)
+  if (v.holds() && !v.hint.empty()) out += indent + "hint: " + v.hint + "\n";
   if (v.kind == VerdictKind::Undecided && !v.residual.empty()) out += indent + "residual: " + v.residual + "\n";
   // The prover's own "differs at ..." repeats the counterexample above; rule details (which
   // link, what was eliminated) are kept.
@@ -96,6 +99,7 @@ nlohmann::ordered_json verdict_json(const Verdict& v) {
     j["rhs_value"] = v.rhs_value;
     if (!v.hint.empty()) j["hint"] = v.hint;
   }
+  if (v.holds() && !v.hint.empty()) j["hint"] = v.hint;
   if (v.kind == VerdictKind::Undecided) {
     if (!v.residual.empty()) j["residual"] = v.residual;
     j["reason"] = v.reason;

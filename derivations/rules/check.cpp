@@ -7,6 +7,7 @@
 #include <chrono>
 #include <functional>
 
+#include "derivations/decide/common_domain.hpp"
 #include "derivations/rules/context.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/in_domain.hpp"
@@ -76,26 +77,48 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
   }
 }
 
-// Side conditions of the claim's sides (not of what an integral's or a limit's bound variable needs).
-void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res) {
+bool has_calculus(const Node& n) {
+  if (n.kind == NodeKind::Call && (n.text == "integral" || n.text == "diff" || n.text == "limit" || n.text == "O"))
+    return true;
+  for (const auto& a : n.args)
+    if (has_calculus(a)) return true;
+  return false;
+}
+
+// Side conditions of the claim's sides (not of what an integral's or a limit's bound variable
+// needs). `written` receives each side as written (its parts and conditions) when every side is
+// an expression without calculus (no integral, derivative, limit or order term), else stays empty.
+void add_claim_side_conditions(const Derivation& d, const Step& s, const Relation& claim, StepResult& res,
+                               std::vector<WrittenSide>& written) {
   try {
     const bool asymptotic = (s.rule.name == "limit" || s.rule.name == "series") && s.rule.var;
+    bool plain = !asymptotic && !s.names_result;
     for (std::size_t si = 0; si < claim.sides.size(); ++si) {
       const Node& side = claim.sides[si];
-      if (limit_value_side(s, side, d.symbols)) continue;
+      if (limit_value_side(s, side, d.symbols)) {
+        plain = false;
+        continue;
+      }
       Node n = resolve_definitions(d, side);
+      plain = plain && !has_calculus(n);
       // A limit or series claim is about x near the point only (`x*log(x) = 0  by limit x -> 0+`,
       // `log(sin(x)) = log(x) - x^2/6  by series x -> 0+ to order 4`): the conditions of parts
       // that involve x are not claims about x's whole domain (the limit engine decides where the
       // expressions are real near the point); the conditions of parts free of x are.
-      for (auto& sc : side_conditions_of_tree(n, d.symbols, asymptotic ? s.rule.var->label : std::string())) {
+      WrittenSide w;
+      w.conditions = side_conditions_of_tree_parts(n, d.symbols, asymptotic ? s.rule.var->label : std::string(), w.parts);
+      if (plain) w.value = to_ginac(n, d.symbols);
+      for (auto& sc : w.conditions) {
         bool dup = false;
         for (const auto& o : res.verdict.side_conditions) dup = dup || o.what == sc.what;
         if (!dup) res.verdict.side_conditions.push_back(sc);
       }
+      written.push_back(std::move(w));
     }
+    if (!plain) written.clear();
   } catch (const std::exception&) {
     // conversion problems were reported by the rule already
+    written.clear();
   }
 }
 
@@ -127,7 +150,14 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   if (s.erratum) check_erratum(d, s, opt, res);
   check_dimensions(d, s, claim, res);
   res.verdict = rules::run_rule(d, s, claim, opt, res);
-  add_claim_side_conditions(d, s, claim, res);
+  std::vector<WrittenSide> written;
+  add_claim_side_conditions(d, s, claim, res, written);
+  // A claim must hold on the whole declared domain (premises only warn); where every side is
+  // undefined is not a counterexample (decide/common_domain.hpp).
+  if (s.rule.name != "given" && s.rule.name != "definition") {
+    if (written.size() >= 2) require_defined_on_common_domain(res.verdict, written, d.symbols);
+    else require_defined_on_domain(res.verdict);
+  }
   if (s.first_side_fresh && res.verdict.kind == VerdictKind::Refuted && claim.sides.size() >= 2) {
     // Most likely the author meant to define the name; say how (docs/format.md, "Chains and names").
     const std::string name = to_text(claim.sides[0]);
@@ -136,8 +166,6 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
                           "(write '" + name + " = " + to_text(claim.sides[1]) +
                           "  by definition' as a step of its own and derive the rest from it)";
   }
-  // A claim must hold on the whole declared domain (premises only warn).
-  if (s.rule.name != "given" && s.rule.name != "definition") require_defined_on_domain(res.verdict);
   // An ODE solution proved by residual and initial values holds only up to a singularity.
   const std::size_t first = s.names_result ? 1 : 0;   // `W = integral(...) = G` names the result
   const bool integral_claim = claim.sides.size() > first && claim.sides[first].kind == NodeKind::Call &&
