@@ -15,19 +15,11 @@ using GiNaC::ex;
 
 enum class Defined { Yes, No, Unknown };
 
-// Is the side, as written, real at p? No: some part is certainly not real or divides by an
-// exact zero there; Yes: every part has a certified real value.
-Defined defined_at(const WrittenSide& s, const GiNaC::exmap& p, std::string* value, std::string* why) {
-  bool unknown = false;
-  for (std::size_t i = 0; i < s.parts.nops(); ++i) {
-    kernel::Ball b = kernel::enclose_sign_at(s.parts.op(i), &p, 128, 1 << 12);
-    if (b.status == kernel::BallStatus::NotReal || b.status == kernel::BallStatus::Pole) {
-      if (why) *why = b.why;
-      return Defined::No;
-    }
-    if (b.status != kernel::BallStatus::Value) unknown = true;
-  }
-  if (unknown) return Defined::Unknown;
+// Is the side, as written, real at p? (defined_at_point, with the side's value when it is)
+Defined defined_at(const WrittenSide& s, const GiNaC::exmap& p, std::string* value) {
+  const int d = defined_at_point(s.parts, p);
+  if (d < 0) return Defined::No;
+  if (d == 0) return Defined::Unknown;
   kernel::Ball b = kernel::enclose_sign_at(s.value, &p, 128, 1 << 12);
   if (b.status != kernel::BallStatus::Value) return Defined::Unknown;
   if (value) *value = b.text(20);
@@ -46,14 +38,14 @@ bool one_side_only(Verdict& v, const std::vector<WrittenSide>& sides, const GiNa
                    const std::vector<std::pair<std::string, std::string>>& described, const std::string& what,
                    bool* all_undefined) {
   int yes = -1, no = -1;
-  std::string value, why;
+  std::string value;
   bool every_no = true;
   for (std::size_t i = 0; i < sides.size(); ++i) {
-    std::string val, w;
-    const Defined d = defined_at(sides[i], p, &val, &w);
+    std::string val;
+    const Defined d = defined_at(sides[i], p, &val);
     every_no = every_no && d == Defined::No;
     if (d == Defined::Yes && yes < 0) yes = static_cast<int>(i), value = val;
-    if (d == Defined::No && no < 0) no = static_cast<int>(i), why = w;
+    if (d == Defined::No && no < 0) no = static_cast<int>(i);
   }
   if (all_undefined) *all_undefined = every_no;
   if (yes < 0 || no < 0) return false;
@@ -61,9 +53,13 @@ bool one_side_only(Verdict& v, const std::vector<WrittenSide>& sides, const GiNa
   v.method += " + side condition";
   v.points = 0;   // the agreeing points of the verdict it replaces are not evidence here
   v.point = described;
-  const std::string undefined = "undefined (" + (why.empty() ? std::string("no real value") : why) + ")";
-  v.lhs_value = yes == 0 ? value : undefined;
-  v.rhs_value = yes == 0 ? undefined : value;
+  const std::string undefined = "undefined (a side condition of it fails here)";
+  // the first side against the one that differs from it in being defined
+  const bool first_defined = yes == 0;
+  v.lhs_value = first_defined ? value : undefined;
+  v.rhs_value = first_defined ? undefined : value;
+  if (yes != 0 && no != 0)
+    v.lhs_value = "side " + std::to_string(no + 1) + " undefined", v.rhs_value = "side " + std::to_string(yes + 1) + " = " + value;
   v.detail = "only one side is defined at this point of the declared domain: " + what +
              "; restrict the declarations or add an assumption";
   return true;
@@ -97,6 +93,12 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
   }
   bool same = true;
   for (std::size_t i = 1; i < sides.size(); ++i) same = same && needs[i] == needs[0];
+  // x^a (a not a number) is taken as undefined for x <= 0, yet it is real at special a
+  // ((-1)^2): sides undefined by that convention may still be defined, and differ, on a null set
+  // of parameter values, so such conditions do not make a common domain
+  for (const WrittenSide& s : sides)
+    for (const SideCondition& c : s.conditions)
+      if (c.status != SideCondition::Status::Guaranteed && c.reason == "power base") same = false;
   // the violated conditions, one of each set of equivalent ones
   std::string conds;
   std::set<std::string> listed;

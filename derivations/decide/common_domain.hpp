@@ -35,6 +35,11 @@ std::vector<SideCondition> side_conditions_of_tree_parts(const Node& n, const Sy
 // prove.cpp.
 std::map<std::string, std::string> side_condition_keys(const GiNaC::ex& e, const SymbolTable& ctx);
 
+// Is a side with these parts defined at p, as side conditions read it? -1: a condition of a
+// part is certainly violated there (or a part certainly has no real value); +1: every condition
+// certainly holds and every part has a certified real value; 0: not decided (prove.cpp).
+int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p);
+
 // For a verdict that holds and has a violated side condition (a point of the declared domain
 // where some side is certainly undefined):
 //   - at a point where one side is certainly defined and another certainly undefined (the
@@ -43,7 +48,8 @@ std::map<std::string, std::string> side_condition_keys(const GiNaC::ex& e, const
 //   - every side certainly undefined at every violating point, and the sides' conditions that
 //     the declarations do not guarantee are the same list (then they are defined on the same
 //     set): the verdict stands on the common domain; the condition is reported, with the hint
-//     to assume it;
+//     to assume it (not for the base of a power with a symbolic exponent: (x^a)^b is real at
+//     x = -1, a = 2 although x^a counts as undefined for x < 0);
 //   - otherwise undecided: the points seen are not evidence either way.
 // With fewer than two sides this is require_defined_on_domain.
 void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>& sides, const SymbolTable& ctx);

@@ -693,6 +693,43 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 
 // check_satisfiable lives in satisfiable.cpp.
 
+int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p) {
+  std::vector<RawCond> raw;
+  collect_conditions(parts, raw);
+  bool all_hold = true;
+  for (const RawCond& rc : raw) {
+    const ex arg = rc.kind == CondKind::UnitInterval ? 1 - GiNaC::pow(rc.arg, 2) : rc.arg;
+    kernel::Ball b = kernel::enclose_sign_at(arg, &p, 128, 1 << 12);
+    if (b.status == kernel::BallStatus::NotReal || b.status == kernel::BallStatus::Pole) return -1;
+    if (b.status != kernel::BallStatus::Value) {
+      all_hold = false;
+      continue;
+    }
+    switch (rc.kind) {
+      case CondKind::Nonzero:
+        if (b.exact_zero()) return -1;
+        all_hold = all_hold && (b.positive() || b.negative());
+        break;
+      case CondKind::Positive:
+        if (b.negative() || b.exact_zero()) return -1;
+        all_hold = all_hold && b.positive();
+        break;
+      case CondKind::Nonnegative:
+      case CondKind::UnitInterval:
+        if (b.negative()) return -1;
+        all_hold = all_hold && (b.positive() || b.exact_zero());
+        break;
+    }
+  }
+  if (!all_hold) return 0;
+  for (std::size_t i = 0; i < parts.nops(); ++i) {
+    kernel::Ball b = kernel::enclose_sign_at(parts.op(i), &p, 128, 1 << 12);
+    if (b.status == kernel::BallStatus::NotReal || b.status == kernel::BallStatus::Pole) return -1;
+    if (b.status != kernel::BallStatus::Value) return 0;
+  }
+  return 1;
+}
+
 std::map<std::string, std::string> side_condition_keys(const ex& e, const SymbolTable& ctx) {
   std::vector<RawCond> raw;
   collect_conditions(e, raw);

@@ -24,6 +24,8 @@ nlohmann::ordered_json claim(const std::string& lhs, const std::string& rhs, con
   return dc::check_claim_line(j.dump(), 1, "test.jsonl");
 }
 
+nlohmann::ordered_json line(const nlohmann::json& j) { return dc::check_claim_line(j.dump(), 1, "test.jsonl"); }
+
 std::string verdict(const nlohmann::ordered_json& r) { return r.value("verdict", ""); }
 bool accepted(const nlohmann::ordered_json& r) {
   return verdict(r) == "proved" || verdict(r) == "holds_numerically";
@@ -172,6 +174,42 @@ TEST_CASE("signs on declared intervals: range analysis, Sturm sequences, Arb sub
     auto bad = claim("exp(log(sin(x) + cos(y) + 1/2))", "sin(x) + cos(y) + 1/2", {{"x", "in [0, 5]"}, {"y", "in [0, 2]"}});
     CAPTURE(all_text(bad));
     CHECK(verdict(bad) == "refuted");
+  }
+}
+
+TEST_CASE("signs decided by Sturm sequences decide antiderivatives and limits", "[domains][signs]") {
+  SECTION("integral(1/(x^2 - 2*x + 2), x) = atan(x - 1): the divisor never vanishes, proved") {
+    auto r = line({{"kind", "antiderivative"}, {"lhs", "1/(x^2 - 2*x + 2)"}, {"rhs", "atan(x - 1)"}, {"var", "x"}});
+    CAPTURE(all_text(r));
+    CHECK(verdict(r) == "proved");
+  }
+  SECTION("integral((2*x - 2)/(x^2 - 2*x + 2), x) = log(x^2 - 2*x + 2): its log argument is positive, proved") {
+    auto r = line({{"kind", "antiderivative"}, {"lhs", "(2*x - 2)/(x^2 - 2*x + 2)"}, {"rhs", "log(x^2 - 2*x + 2)"}, {"var", "x"}});
+    CAPTURE(all_text(r));
+    CHECK(verdict(r) == "proved");
+    CHECK(all_text(r).find("Sturm sequence") != std::string::npos);
+  }
+  SECTION("integral((2*x - 2)/(x^2 - 2*x), x) = log(x^2 - 2*x) is refuted (log of a negative number on (0, 2))") {
+    auto r = line({{"kind", "antiderivative"}, {"lhs", "(2*x - 2)/(x^2 - 2*x)"}, {"rhs", "log(x^2 - 2*x)"}, {"var", "x"}});
+    CAPTURE(all_text(r));
+    CHECK(verdict(r) == "refuted");
+  }
+  SECTION("integral(1/(x^2 - 2*x + 2), x) = atan(x + 1) is refuted") {
+    auto r = line({{"kind", "antiderivative"}, {"lhs", "1/(x^2 - 2*x + 2)"}, {"rhs", "atan(x + 1)"}, {"var", "x"}});
+    CAPTURE(all_text(r));
+    CHECK(verdict(r) == "refuted");
+  }
+  SECTION("limit of exp(-(a^2 - 2*a + 2)*x) at oo is 0 for every real a") {
+    auto r = line({{"kind", "limit"}, {"lhs", "exp(-(a^2 - 2*a + 2)*x)"}, {"rhs", "0"}, {"var", "x"}, {"point", "oo"},
+                   {"assumptions", {{"a", "real"}}}});
+    CAPTURE(all_text(r));
+    CHECK(verdict(r) == "proved");
+  }
+  SECTION("limit of exp(-(a^2 - 2*a)*x) at oo is not 0 for a in (0, 2): not accepted") {
+    auto r = line({{"kind", "limit"}, {"lhs", "exp(-(a^2 - 2*a)*x)"}, {"rhs", "0"}, {"var", "x"}, {"point", "oo"},
+                   {"assumptions", {{"a", "real"}}}});
+    CAPTURE(all_text(r));
+    CHECK(!accepted(r));
   }
 }
 
