@@ -111,7 +111,28 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
     if (listed.insert(key).second) conds += (conds.empty() ? "" : ", ") + sc->what;
   }
   const std::string first_point = detail::join_point(violated.front()->point);
+  GiNaC::lst all;
+  for (const WrittenSide& s : sides)
+    for (std::size_t i = 0; i < s.parts.nops(); ++i) all.append(s.parts.op(i));
+  detail::PointSampler sampler({all}, ctx);
   if (same && every_point_undefined) {
+    // the common domain must not be empty: a point where every side is defined
+    bool inhabited = false;
+    detail::Rng seek(20261127 ^ detail::hash_text(conds, 13));
+    for (int attempt = 0; attempt < 48 && !inhabited; ++attempt) {
+      bool adm = false;
+      const GiNaC::exmap p = sampler.draw(seek, attempt % 3 == 2 ? 1 : 0, &adm);
+      if (!adm) continue;
+      inhabited = true;
+      for (const WrittenSide& s : sides) inhabited = inhabited && defined_at(s, p, nullptr) == Defined::Yes;
+    }
+    if (!inhabited) {
+      v.kind = VerdictKind::Undecided;
+      v.reason = "both sides are undefined at " + first_point + " (" + conds +
+                 " fails), and no point where they are defined was found: the claim may be about an empty set";
+      v.detail = v.reason;
+      return;
+    }
     v.detail += (v.detail.empty() ? "" : "; ") +
                 std::string("holds on the common domain of the sides: both are undefined where ") + conds +
                 " fails (e.g. at " + first_point + "), and they need the same conditions";
@@ -120,10 +141,6 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
     return;
   }
   // Look for a point where exactly one side is defined.
-  GiNaC::lst all;
-  for (const WrittenSide& s : sides)
-    for (std::size_t i = 0; i < s.parts.nops(); ++i) all.append(s.parts.op(i));
-  detail::PointSampler sampler({all}, ctx);
   detail::Rng rng(20261127 ^ detail::hash_text(conds, 11));
   for (int attempt = 0; attempt < 48; ++attempt) {
     bool adm = false;

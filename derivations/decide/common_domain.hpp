@@ -47,7 +47,8 @@ int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p);
 //     there, with the defined side's value;
 //   - every side certainly undefined at every violating point, and the sides' conditions that
 //     the declarations do not guarantee are the same list (then they are defined on the same
-//     set): the verdict stands on the common domain; the condition is reported, with the hint
+//     set) and a point where every side is defined is found (the common domain is not
+//     empty): the verdict stands on the common domain; the condition is reported, with the hint
 //     to assume it (not for the base of a power with a symbolic exponent: (x^a)^b is real at
 //     x = -1, a = 2 although x^a counts as undefined for x < 0);
 //   - otherwise undecided: the points seen are not evidence either way.

@@ -79,6 +79,11 @@ TEST_CASE("sides undefined at the same points: the identity holds on the common 
     CAPTURE(all_text(r));
     CHECK(accepted(r));
   }
+  SECTION("sides defined nowhere: not accepted on an empty common domain") {
+    auto r = claim("sqrt(-x^2 - 1)", "sqrt(-x^2 - 1) + 0*x", {{"x", "real"}});
+    CAPTURE(all_text(r));
+    CHECK(!accepted(r));
+  }
   SECTION("sqrt(x)^2 = x with x real: only the left side is undefined for x < 0, refuted") {
     auto r = claim("sqrt(x)^2", "x", {{"x", "real"}});
     CAPTURE(all_text(r));
