@@ -15,6 +15,7 @@
 
 #include "derivations/limit_engine/gruntz.hpp"
 #include "derivations/limit_engine/limits.hpp"
+#include "derivations/limit_engine/internal/bounded.hpp"
 
 namespace dc::limits {
 
@@ -24,15 +25,6 @@ namespace {
 
 std::string fname(const ex& e) {
   return GiNaC::is_a<GiNaC::function>(e) ? GiNaC::ex_to<GiNaC::function>(e).get_name() : std::string();
-}
-
-bool is_bounded(const ex& e) {
-  const std::string n = fname(e);
-  if (n == "sin" || n == "cos" || n == "atan") return true;
-  if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-      GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_pos_integer())
-    return is_bounded(e.op(0));
-  return false;
 }
 
 }  // namespace
@@ -83,11 +75,13 @@ std::optional<LimitOutcome> outer_function(Gruntz& G, const ex& g) {
 
 namespace {
 
-// One oscillating term T = B * R, B the product of the bounded factors that have no limit.
+// One oscillating term T = B * R, B the product of the factors that have no limit.
 struct OscTerm {
-  enum class Kind { Null, Bounded, Oscillator } kind;
+  enum class Kind { Null, Bounded, Oscillator, Diverges, Limit } kind;
   bool unbounded = false;   // Oscillator with an amplitude that tends to infinity
   ex base;                  // Oscillator: the sin or cos
+  int sign = 0;             // Diverges: the sign of the infinity
+  ex value;                 // Limit: the term's (finite) limit
 };
 
 // sin(u) or cos(u) with u -> +-oo; false when that is not shown
@@ -101,6 +95,17 @@ bool is_oscillator(Gruntz& G, const ex& e) {
   }
 }
 
+// The sign of an x-free quantity, 2 when the declarations do not fix it.
+int sign_or_unknown(Gruntz& G, const ex& c) {
+  try {
+    return G.constant_sign(c);
+  } catch (const BudgetExceeded&) {
+    throw;
+  } catch (const Undecided&) {
+    return 2;
+  }
+}
+
 OscTerm classify(Gruntz& G, const ex& T) {
   ex B = 1, R = 1;
   std::vector<ex> factors;
@@ -108,18 +113,47 @@ OscTerm classify(Gruntz& G, const ex& T) {
     for (std::size_t i = 0; i < T.nops(); ++i) factors.push_back(T.op(i));
   else
     factors.push_back(T);
+  ex known = 1;   // the limits of oscillating factors b^p whose base has a limit c != 0 (1 + sin(x)/x)
   for (const ex& f : factors) {
     bool oscillates = false;
-    if (is_bounded(f)) {
+    if (f.has(G.variable())) {
       try {
         G.limit(f);
       } catch (const Oscillates&) {
         oscillates = true;
       }
     }
+    if (oscillates && GiNaC::is_a<GiNaC::power>(f) && !f.op(1).has(G.variable())) {
+      std::optional<LimitOutcome> o;
+      try {
+        o = reduce_oscillation(G, f.op(0));
+      } catch (const BudgetExceeded&) {
+        throw;
+      } catch (const Undecided&) {
+      } catch (const Oscillates&) {
+      }
+      if (o && o->kind == LimitOutcome::Kind::Value) {
+        const int cs = sign_or_unknown(G, o->value);
+        if ((cs == 1 || cs == -1) && (f.op(1).info(GiNaC::info_flags::integer) || cs == 1)) {
+          known *= GiNaC::pow(o->value, f.op(1));
+          continue;
+        }
+      }
+    }
     (oscillates ? B : R) *= f;
   }
-  if (B.is_equal(1)) throw Undecided("an oscillating subexpression that is not a bounded factor of its term");
+  if (B.is_equal(1) && !known.is_equal(1)) {
+    // every oscillating factor has a limit: the term's limit is the product
+    const LimitValue r = G.limit(R);
+    if (r.finite()) return {OscTerm::Kind::Limit, false, ex(), 0, r.value * known};
+    const int ks = sign_or_unknown(G, known);
+    if (ks != 1 && ks != -1) throw Undecided("the sign of a limit factor is not determined by the declarations");
+    return {OscTerm::Kind::Diverges, false, ex(), (r.kind == LimitValue::Kind::PlusInfinity ? 1 : -1) * ks};
+  }
+  B *= known;
+  // B must be bounded: an interval enclosure (sin, cos in [-1, 1], ...) shows it
+  const std::optional<Enclosure> b = B.is_equal(1) ? std::nullopt : enclose(G, B);
+  if (!b) throw Undecided("an oscillating subexpression that is not a bounded factor of its term");
   const LimitValue r = G.limit(R);
   if (r.finite() && G.constant_sign(r.value) == 0) return {OscTerm::Kind::Null};
   // B = sin(u)^n or cos(u)^n, u -> +-oo: B takes two different values (1 and 0 or -1) for
@@ -127,6 +161,11 @@ OscTerm classify(Gruntz& G, const ex& T) {
   const ex base = GiNaC::is_a<GiNaC::power>(B) ? B.op(0) : B;
   if (is_oscillator(G, base)) return {OscTerm::Kind::Oscillator, !r.finite(), base};
   if (r.finite()) return {OscTerm::Kind::Bounded};
+  // R -> +-oo times B inside [lo, hi] with lo > 0 (or hi < 0): B stays away from 0, so the
+  // term diverges like R (x*exp(sin(x)) -> oo, x/(2 + sin(x)) -> oo)
+  const int rs = r.kind == LimitValue::Kind::PlusInfinity ? 1 : -1;
+  if (sign_or_unknown(G, b->lo) == 1) return {OscTerm::Kind::Diverges, false, ex(), rs};
+  if (sign_or_unknown(G, b->hi) == -1) return {OscTerm::Kind::Diverges, false, ex(), -rs};
   throw Undecided("an oscillating factor times a factor that does not tend to 0");
 }
 
@@ -139,7 +178,10 @@ LimitOutcome reduce_terms(Gruntz& G, const ex& e) {
   // terms without an oscillating factor are summed before their limit is taken (x - log(x)
   // must not become oo - oo)
   ex regular = 0;
+  ex known = 0;                     // the finite limits of oscillating terms that have one
   int oscillators = 0, bounded = 0;
+  int diverges = 0;                 // the sign of the diverging terms (bounded away from 0 times +-oo)
+  bool mixed_divergence = false;    // diverging terms of both signs (they might cancel)
   bool unbounded = false;
   ex oscillator;
   for (const ex& T : terms) {
@@ -150,14 +192,32 @@ LimitOutcome reduce_terms(Gruntz& G, const ex& e) {
     } catch (const Oscillates&) {
     }
     OscTerm t = classify(G, T);
+    if (t.kind == OscTerm::Kind::Limit) {
+      known += t.value;
+      continue;
+    }
     if (t.kind == OscTerm::Kind::Bounded) ++bounded;
+    if (t.kind == OscTerm::Kind::Diverges) {
+      if (diverges != 0 && diverges != t.sign) mixed_divergence = true;
+      diverges = t.sign;
+    }
     if (t.kind == OscTerm::Kind::Oscillator) {
       ++oscillators;
       oscillator = t.base;
       unbounded = unbounded || t.unbounded;
     }
   }
-  const LimitValue acc = G.limit(regular);
+  LimitValue acc = G.limit(regular);
+  if (acc.finite()) acc.value += known;
+  if (diverges != 0) {
+    // terms that tend to the same infinity, next to bounded ones and a part with a limit that
+    // is finite or the same infinity
+    const int as = acc.finite() ? 0 : (acc.kind == LimitValue::Kind::PlusInfinity ? 1 : -1);
+    if (mixed_divergence || unbounded || as == -diverges)
+      throw Undecided("oscillating terms that diverge next to terms that might cancel them");
+    return from_limit(LimitValue::infinity(diverges),
+                      "Gruntz (mrv) + a factor bounded away from 0 (interval enclosure) times a divergent factor");
+  }
   if (oscillators == 0 && bounded == 0)
     return from_limit(acc, "Gruntz (mrv) + bounded oscillating factor times a factor that tends to 0");
   if (!acc.finite() && !unbounded)
@@ -242,19 +302,17 @@ std::optional<LimitOutcome> product_of_limits(Gruntz& G, const ex& g) {
 
 }  // namespace
 
-LimitOutcome reduce_oscillation(Gruntz& G, const ex& g) {
-  DepthGuard guard(G.budget(), "oscillation");
-  if (auto o = outer_function(G, g)) {
-    if (o->kind == LimitOutcome::Kind::Undecided) throw Undecided(o->reason);
-    return *o;
-  }
+namespace {
+
+// The reductions on g as written, then on g expanded ((x + sin(x))/x = 1 + sin(x)/x).
+LimitOutcome reduce_as_written(Gruntz& G, const ex& g) {
   try {
     if (auto o = product_of_limits(G, g)) return *o;
   } catch (const Undecided&) {
   } catch (const Oscillates&) {
   }
   // the product as written first ((x^2 + sin(x)) cos(1/x) at 0: a null factor times a
-  // bounded one), then expanded ((x + sin(x))/x = 1 + sin(x)/x)
+  // bounded one), then expanded
   try {
     return reduce_terms(G, g);
   } catch (const Undecided&) {
@@ -267,6 +325,45 @@ LimitOutcome reduce_oscillation(Gruntz& G, const ex& g) {
     ex expanded = make_tractable(g.expand(), G.variable());
     if (!GiNaC::is_a<GiNaC::add>(expanded)) throw;
     return reduce_terms(G, expanded);
+  }
+}
+
+// g with its sums written through their dominant part (internal/bounded.hpp), reduced again;
+// nullopt when nothing was rewritten or the rewritten form is not decided either.
+std::optional<LimitOutcome> reduce_dominant(Gruntz& G, const ex& g) {
+  bool changed = false;
+  const ex h = factor_dominant(G, g, changed);
+  if (!changed || h.is_equal(g)) return std::nullopt;
+  try {
+    LimitOutcome o = reduce_as_written(G, h);
+    o.method += " (each sum with an oscillating term written as its dominant part times a factor that tends to 1)";
+    return o;
+  } catch (const BudgetExceeded&) {
+    throw;
+  } catch (const Undecided&) {
+  } catch (const Oscillates&) {
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+LimitOutcome reduce_oscillation(Gruntz& G, const ex& g) {
+  DepthGuard guard(G.budget(), "oscillation");
+  if (auto o = outer_function(G, g)) {
+    if (o->kind == LimitOutcome::Kind::Undecided) throw Undecided(o->reason);
+    return *o;
+  }
+  try {
+    return reduce_as_written(G, g);
+  } catch (const BudgetExceeded&) {
+    throw;
+  } catch (const Undecided&) {
+    if (auto o = reduce_dominant(G, g)) return *o;
+    throw;
+  } catch (const Oscillates&) {
+    if (auto o = reduce_dominant(G, g)) return *o;
+    throw;
   }
 }
 
