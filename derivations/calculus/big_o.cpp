@@ -1,6 +1,7 @@
 #include "derivations/calculus/big_o.hpp"
 
 #include "derivations/calculus/limit_entry.hpp"
+#include "derivations/limit_engine/budget.hpp"
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/kernel/sample.hpp"
 
@@ -41,6 +42,8 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
       v.kind = VerdictKind::Refuted;
       v.lhs_value = over + " -> " + limit_text(L, ctx) + side;
       v.rhs_value = "bounded";
+      v.lhs_label = "remainder over gauge";
+      v.rhs_label = "needed";
       v.detail = "the remainder is not " + o + ": " + over + " tends to " + limit_text(L, ctx) + side;
     } else {
       v.kind = VerdictKind::Proved;
@@ -107,6 +110,8 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
         v.point = sampler.describe(at);
         v.lhs_value = over + " -> " + limit_text(P, ctx);
         v.rhs_value = "bounded";
+      v.lhs_label = "remainder over gauge";
+      v.rhs_label = "needed";
         v.detail = "the remainder is not " + o + " at " + detail::join_point(v.point) + ": " + over + " tends to " +
                    limit_text(P, ctx);
         return v;
@@ -117,6 +122,69 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
   v.reason = "whether " + over + " stays bounded was not decided: " +
              (L.reason.empty() ? std::string("the limit engine could not decide its limit") : L.reason);
   return v;
+}
+
+namespace {
+
+// x in terms of eps: point + eps, or +-1/eps at +-oo
+// One symbol for every call: fresh symbols would shift GiNaC's term order for the rest of the
+// process (limit_engine/budget.hpp, pooled_symbol).
+const GiNaC::symbol& eps_symbol() {
+  static const GiNaC::symbol eps("eps");
+  return eps;
+}
+
+ex in_eps(const ex& point, int at_infinity, const GiNaC::symbol& eps) {
+  return at_infinity != 0 ? ex(at_infinity) / eps : point + eps;
+}
+
+}  // namespace
+
+std::optional<ex> laurent_expansion(const ex& f, const GiNaC::symbol& x, const ex& point, int at_infinity, int order) {
+  if (order < -20 || order > 40 || limits::tree_size(f, 400) > 400) return std::nullopt;
+  const GiNaC::symbol& eps = eps_symbol();
+  try {
+    const ex g = f.subs(x == in_eps(point, at_infinity, eps), GiNaC::subs_options::no_pattern);
+    const ex s = g.series(eps == 0, order);
+    if (!GiNaC::is_a<GiNaC::pseries>(s)) return std::nullopt;
+    const auto& ps = GiNaC::ex_to<GiNaC::pseries>(s);
+    const ex base = at_infinity != 0 ? ex(at_infinity) / x : x - point;
+    ex out = 0;
+    for (int k = ps.ldegree(eps); k < order && k <= ps.degree(eps); ++k) {
+      const ex c = ps.coeff(eps, k);
+      if (c.has(eps) || c.has(x)) return std::nullopt;
+      out += GiNaC::normal(c) * GiNaC::pow(base, k);
+    }
+    return out;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+bool polynomial_within_order(const ex& d, const GiNaC::symbol& x, const ex& point, int at_infinity, int order) {
+  if (limits::tree_size(d, 2000) > 2000) return false;
+  const GiNaC::symbol& eps = eps_symbol();
+  try {
+    const ex g = GiNaC::expand(d.subs(x == in_eps(point, at_infinity, eps), GiNaC::subs_options::no_pattern));
+    if (g.is_zero()) return true;
+    // a sum of terms c*eps^k, c free of eps (and of x), k an integer >= order
+    std::vector<ex> terms;
+    if (GiNaC::is_a<GiNaC::add>(g))
+      for (std::size_t i = 0; i < g.nops(); ++i) terms.push_back(g.op(i));
+    else
+      terms.push_back(g);
+    for (const ex& t : terms) {
+      if (t.has(x)) return false;
+      const ex c = t.subs(eps == 1);   // the eps-free part, if t = c*eps^k
+      if (c.has(eps)) return false;
+      const int k = t.degree(eps);
+      if (!(t - c * GiNaC::pow(eps, k)).expand().is_zero()) return false;
+      if (k < order) return false;
+    }
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
 }
 
 namespace {

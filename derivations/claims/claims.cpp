@@ -382,10 +382,17 @@ class ClaimLine {
                                                approach(nodes.at("var"), dir), static_cast<int>(order), big_o_));
     }
     if (kind == "series_first_order") {
-      // no "dir": the first-order form of the rule is two-sided
+      // lhs = rhs + O((var - point)^2): the rule's first-order form, from the side `dir` names
       if (!point_infinite_) to_ginac(*point_node_, table_);
+      const int dir = limit_direction();
+      if (big_o_) {
+        ex p = point_infinite_ ? ex(0) : to_ginac(*point_node_, table_);
+        if (!point_infinite_ && order_of_big_o(x, p) != 2)
+          throw LineError{"a first-order claim ends in O((var - point)^2), got O(" + to_text(*big_o_) + ")"};
+      }
       return checked(claims::series_derivation(file_, table_, nodes.at("lhs"), nodes.at("rhs"),
-                                               approach(nodes.at("var"), 0), std::nullopt, std::nullopt));
+                                               approach(nodes.at("var"), dir),
+                                               big_o_ && !point_infinite_ ? std::optional<int>(2) : std::nullopt, big_o_));
     }
     // solves_ode: the ODE lhs = rhs in y, yp, ypp; the claimed solution; initial values.
     ex sol = conv("solution");
@@ -459,7 +466,8 @@ class ClaimLine {
       }
     }
     Node n = parse_field(f, t);
-    if (f == "rhs" && j_.value("kind", "") == "series") n = strip_big_o(n);
+    if (f == "rhs" && (j_.value("kind", "") == "series" || j_.value("kind", "") == "series_first_order"))
+      n = strip_big_o(n);
     return n;
   }
 

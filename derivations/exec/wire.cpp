@@ -88,6 +88,8 @@ void put(Writer& w, const Verdict& v) {
   w.pairs(v.point);
   w.str(v.lhs_value);
   w.str(v.rhs_value);
+  w.str(v.lhs_label);
+  w.str(v.rhs_label);
   w.str(v.residual);
   w.str(v.reason);
   w.u64(v.side_conditions.size());
@@ -113,6 +115,8 @@ Verdict get_verdict(WireReader& r) {
   v.point = r.pairs();
   v.lhs_value = r.str();
   v.rhs_value = r.str();
+  v.lhs_label = r.str();
+  v.rhs_label = r.str();
   v.residual = r.str();
   v.reason = r.str();
   v.side_conditions.resize(r.u64());

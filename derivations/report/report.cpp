@@ -68,7 +68,8 @@ std::string verdict_evidence(const Verdict& v, const std::string& indent) {
       out += indent + "counterexample: " + pt + "\n";
     }
     if (!v.lhs_value.empty() || !v.rhs_value.empty())
-      out += indent + "left side = " + v.lhs_value + ", right side = " + v.rhs_value + "\n";
+      out += indent + (v.lhs_label.empty() ? std::string("left side") : v.lhs_label) + " = " + v.lhs_value + ", " +
+             (v.rhs_label.empty() ? std::string("right side") : v.rhs_label) + " = " + v.rhs_value + "\n";
     if (!v.hint.empty()) out += indent + "hint: " + v.hint + "\n";
   }
   // a claim that holds on the common domain of its sides says which assumption makes it hold
@@ -97,6 +98,8 @@ nlohmann::ordered_json verdict_json(const Verdict& v) {
     j["counterexample"] = pt;
     j["lhs_value"] = v.lhs_value;
     j["rhs_value"] = v.rhs_value;
+    if (!v.lhs_label.empty()) j["lhs_label"] = v.lhs_label;
+    if (!v.rhs_label.empty()) j["rhs_label"] = v.rhs_label;
     if (!v.hint.empty()) j["hint"] = v.hint;
   }
   if (v.holds() && !v.hint.empty()) j["hint"] = v.hint;

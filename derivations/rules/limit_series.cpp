@@ -1,10 +1,16 @@
-// `by limit x -> p[+|-] [of A] [with ...]`, `by series x -> p [of A]` and
-// `by first_order d1, d2 of A`: the limit, first-order series or first-order part of A's
-// expression (or, without `of`, of the claim's first side) is derived with the limit helper
-// (derivations/calculus/limit_entry.hpp), and the claim must equal it. A limit side may be `oo`, `-oo` or
-// `undefined` (the limit does not exist: one-sided limits differ, oscillation, no real value).
+// `by limit x -> p[+|-] [of A] [with ...]`, `by series x -> p[+|-] [to order N] [of A]` and
+// `by first_order d1, d2 of A`. A limit of A's expression (or, without `of`, of the claim's
+// first side) is derived with the limit helper (derivations/calculus/limit_entry.hpp), and the
+// claim must equal it; a limit side may be `oo`, `-oo` or `undefined` (the limit does not
+// exist: one-sided limits differ, oscillation, no real value). A series claim holds when the
+// expression and each further side differ by O((x - p)^N) (N = 2 without `to order N`: agreement
+// to first order), decided by the remainder gauge (big_o.hpp). first_order: agreement to first
+// order in small quantities scaled by one eps (see first_order below).
+#include <algorithm>
+
 #include "derivations/calculus/big_o.hpp"
 #include "derivations/calculus/limit_entry.hpp"
+#include "derivations/kernel/range.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
 
@@ -49,15 +55,31 @@ Verdict written_limit_matches(StepContext& c, const Node& n, const ex& f, const 
 bool is_limit_call(const Node& n) { return n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3; }
 
 
-// `by series x -> p to order N`: every compared side g of the claim satisfies
-// f - g = O((x - p)^N) (big_o.hpp), from the rule's side.
+// `by series x -> p [to order N]`: every compared side g of the claim satisfies
+// f - g = O((x - p)^N) (big_o.hpp), from the rule's side; without `to order N` the first-order
+// form, N = 2 (agreement to first order). The derived expansion (GiNaC's Laurent series of f,
+// confirmed) is the evidence: the right coefficients next to a wrong one.
 Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, const std::optional<ex>& ref_lhs,
-                        std::size_t first_compared, const ex& x, const ex& point, int inf) {
+                        std::size_t first_compared, const ex& x, const ex& point, int inf, int order,
+                        bool first_order_form) {
   const RuleSpec& rule = c.rule();
   const SymbolTable& symbols = c.d.symbols;
   const GiNaC::symbol& xs = GiNaC::ex_to<GiNaC::symbol>(x);
-  c.res.derived = c.text(f) + " + " + big_o_text(xs, inf ? ex(0) : point, inf, *rule.order, symbols);
+  const ex p = inf ? ex(0) : point;
+  const std::string o = big_o_text(xs, p, inf, order, symbols);
+  const std::string what_rule =
+      first_order_form ? "series (first order, " + o + ")" : "series to order " + std::to_string(order);
+  c.res.derived = c.text(f) + " + " + o;
+  const std::optional<ex> expansion = laurent_expansion(f, xs, p, inf, order);
+  bool expansion_shown = false;
+  auto show_expansion = [&] {
+    if (expansion_shown || !expansion) return;
+    expansion_shown = true;
+    c.res.derived = c.text(*expansion) + " + " + o;
+  };
   Combiner all;
+  std::vector<std::pair<std::size_t, ex>> compared;   // (index in `all`, side) of the sides that were not proved
+  bool confirmed = false;                               // f - expansion = O(gauge) shown
   for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
     // name the side only when several are compared (`f = L1 = L2`, or `of A` with two sides)
     std::string what = claim.sides.size() > first_compared + 1 ? "side " + std::to_string(i + 1) : "";
@@ -68,10 +90,22 @@ Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, cons
       continue;
     }
     ex g = c.conv(claim.sides[i]);
-    Verdict v = remainder_is_big_o(f - g, xs, inf ? ex(0) : point, inf, inf ? 0 : rule.dir, *rule.order, symbols);
-    v.method = "series to order " + std::to_string(*rule.order) + ": " + v.method;
+    Verdict v = remainder_is_big_o(f - g, xs, p, inf, inf ? 0 : rule.dir, order, symbols);
+    v.method = what_rule + ": " + v.method;
+    // a proved side that differs from the expansion by terms O(gauge) confirms the expansion
+    if (v.kind == VerdictKind::Proved && expansion && !confirmed &&
+        polynomial_within_order(g - *expansion, xs, p, inf, order))
+      confirmed = true;
+    if (v.kind == VerdictKind::Refuted && expansion) {
+      // the right coefficients, once f - expansion = O(gauge) is shown
+      if (!confirmed)
+        confirmed = remainder_is_big_o(f - *expansion, xs, p, inf, inf ? 0 : rule.dir, order, symbols).kind ==
+                    VerdictKind::Proved;
+      if (confirmed) v.detail += "; the expansion is " + c.text(*expansion) + " + " + o;
+    }
     all.add(v, what);
   }
+  if (confirmed) show_expansion();
   return all.result();
 }
 
@@ -90,9 +124,6 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
   if (!is_infinity(rule.point->value, inf)) point = c.conv(rule.point->value);
   if (!is_limit && !rule.order && inf != 0)
     c.fail(rule.point->pos, "a first-order series needs a finite point (or say 'to order N')", rule.point->length);
-  if (!is_limit && !rule.order && rule.dir != 0)
-    c.fail(rule.point->pos, "a one-sided expansion needs 'to order N' ('by series x -> 0+ to order 2 of A')",
-           rule.point->length);
 
   // The expression f: the last side of the step named by `of`, or else the claim's own first
   // side (`lim: (1 - cos(x))/x^2 = 1/2  by limit x -> 0`), which is then not compared.
@@ -120,7 +151,10 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
     first_compared = 1;
   }
 
-  if (!is_limit && rule.order) return series_to_order(c, claim, f, ref_lhs, first_compared, x, point, inf);
+  // a series: to order N, or without `to order N` to first order (N = 2)
+  if (!is_limit)
+    return series_to_order(c, claim, f, ref_lhs, first_compared, x, point, inf, rule.order ? *rule.order : 2,
+                           !rule.order);
 
   // What the helper derives
   ex value;
@@ -142,13 +176,6 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
       how = "limit (" + L.method + (L.confirmed_numerically ? ", confirmed numerically" : "") + ")";
       c.res.derived = value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
     }
-  } else {
-    std::string why;
-    auto s = series_first_order(f, GiNaC::ex_to<GiNaC::symbol>(x), point, &why, &symbols);
-    if (!s) return undecided("series", why.empty() ? "series expansion failed" : why);
-    value = *s;
-    how = "series (first order)";
-    c.res.derived = c.text(value);
   }
   const std::string derived_text =
       does_not_exist ? "undefined" : value_inf ? (value_inf > 0 ? "oo" : "-oo") : c.text(value);
@@ -167,6 +194,8 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
     v.detail = does_not_exist ? dne_detail : "the limit is " + derived_text + ", the claim says " + to_text(written);
     v.lhs_value = derived_text;
     v.rhs_value = to_text(written);
+    v.lhs_label = "limit";
+    v.rhs_label = "claimed";
     return v;
   };
 
@@ -210,6 +239,11 @@ Verdict limit_or_series(StepContext& c, const Relation& named_claim, bool is_lim
       v = undecided("limit", e.what());
     }
     v.method = prefix_method(how, v.method);
+    // the values compared are the limit and the side as written (at the counterexample)
+    if (v.kind == VerdictKind::Refuted && (!v.lhs_value.empty() || !v.rhs_value.empty())) {
+      v.lhs_label = "limit";
+      v.rhs_label = "claimed";
+    }
     all.add(v, what);
   }
   return all.result();
@@ -221,21 +255,145 @@ Verdict limit(StepContext& c, const Relation& claim) { return limit_or_series(c,
 
 Verdict series(StepContext& c, const Relation& claim) { return limit_or_series(c, claim, false); }
 
+namespace {
+
+// The table with one more positive symbol, eps: the common scale of the small quantities.
+SymbolTable with_scale(const SymbolTable& t, ex& eps) {
+  SymbolTable out = t;
+  std::string name = "eps";
+  for (int k = 1; out.find(name); ++k) name = "eps" + std::to_string(k);
+  SymbolInfo info;
+  info.name = name;
+  info.domain = Domain::positive();
+  eps = out.declare(info).sym;
+  return out;
+}
+
+// d = L - R is O(eps^2) after every small quantity d_i becomes eps*d_i, as eps -> 0+ (the
+// gauge of big_o.hpp in eps, d_i fixed: each direction of approach on its own).
+Verdict second_order_in_eps(StepContext& c, const ex& d, const std::vector<ex>& smalls, const std::string& how) {
+  ex eps;
+  const SymbolTable scaled = with_scale(c.d.symbols, eps);
+  GiNaC::exmap by_eps;
+  for (const ex& s : smalls) by_eps[s] = eps * s;
+  const ex r = d.subs(by_eps, GiNaC::subs_options::no_pattern);
+  Verdict v = remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 2, scaled);
+  const std::string e = GiNaC::ex_to<GiNaC::symbol>(eps).get_name();
+  v.method = "first order (" + how + "; each small quantity scaled by " + e + "): " + v.method;
+  if (v.kind == VerdictKind::Refuted && !v.point.empty())
+    v.detail += " (each small quantity is " + e + " times its value at this point)";
+  return v;
+}
+
+std::string names_of(const std::vector<ex>& xs, const StepContext& c) {
+  std::string out;
+  for (const ex& x : xs) out += (out.empty() ? "" : ", ") + c.text(x);
+  return out;
+}
+
+}  // namespace
+
+// `C  by first_order d1, d2 of A`: C agrees with A to first order in the small quantities:
+// with every d_i = eps*delta_i, the claim's sides differ by O(eps^2) on A. Three ways, in order:
+//   1. the truncated form: A with its terms of order >= 2 dropped implies C (the rocket's
+//      `m*dv = u*dm`);
+//   2. C's first side is A's: each further side differs from A's last side by O(eps^2); or A
+//      is `q = expr` (q not small): with q replaced by expr, C's sides differ by O(eps^2);
+//   3. A's first-order part sum c_i d_i = 0 (no term of order 0) gives one small quantity d_j
+//      (c_j nonzero by the declarations) in terms of the others; substituted, each side of C
+//      minus its first is O(eps^2).
+// 2 and 3 are decided by the remainder gauge (big_o.hpp), so they also refute; 1 only proves
+// (an exact claim such as y^2 = 1 + d for y = sqrt(1 + d) agrees to first order, yet does not
+// follow from the truncated y = 1 + d/2).
 Verdict first_order(StepContext& c, const Relation& claim) {
   std::vector<GiNaC::symbol> smalls;
-  for (const auto& a : c.rule().smalls) smalls.push_back(GiNaC::ex_to<GiNaC::symbol>(c.symbol_of(a)));
-  const Step& A = c.ref_step(c.rule().into[0]);
-  std::vector<Eq> eqs;
-  std::string derived;
-  for (auto& q : c.equations(c.rule().into[0])) {
-    ex e = dc::first_order(q.e.expand(), smalls);
-    derived += (derived.empty() ? "" : "; ") + c.text(e) + " = 0";
-    eqs.push_back({e, ex(), A.label});
+  std::vector<ex> small_ex;
+  for (const auto& a : c.rule().smalls) {
+    small_ex.push_back(c.symbol_of(a));
+    smalls.push_back(GiNaC::ex_to<GiNaC::symbol>(small_ex.back()));
   }
-  c.res.derived = derived;
+  const RuleArg& ref = c.rule().into[0];
+  const Step& A = c.ref_step(ref);
   std::vector<ex> sd = c.sides(claim);
   if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by first_order' must be an equation");
-  return links_follow(c, sd, eqs, "first order");
+  const std::vector<Eq> a_eqs = c.equations(ref);
+  std::vector<Eq> eqs;
+  std::vector<ex> truncated;
+  std::string derived;
+  std::string singular;
+  for (auto& q : a_eqs) {
+    try {
+      ex e = dc::first_order(q.e.expand(), smalls);
+      derived += (derived.empty() ? "" : "; ") + c.text(e) + " = 0";
+      eqs.push_back({e, ex(), A.label});
+      truncated.push_back(e);
+    } catch (const std::domain_error& e) {
+      singular = e.what();
+    }
+  }
+  c.res.derived = derived;
+  // 1. the truncated form
+  Verdict t;
+  if (singular.empty()) {
+    t = links_follow(c, sd, eqs, "first order");
+    if (t.holds()) return t;
+  }
+  // 2. the same first side as A
+  const std::vector<ex> as = c.sides(claim_of(A));
+  if (as.size() >= 2 && prove_equal(sd[0], as[0], c.d.symbols, c.opt).kind == VerdictKind::Proved) {
+    Combiner all;
+    for (std::size_t i = 1; i < sd.size(); ++i)
+      all.add(second_order_in_eps(c, as.back() - sd[i], small_ex, "side " + std::to_string(i + 1) + " against the last side of " + A.label),
+              sd.size() > 2 ? "side " + std::to_string(i + 1) : "");
+    return all.result();
+  }
+  // 2b. A defines a quantity q = expr (q not small): q replaced by expr in the claim
+  if (as.size() >= 2 && GiNaC::is_a<GiNaC::symbol>(as[0]) && !as.back().has(as[0]) &&
+      std::none_of(small_ex.begin(), small_ex.end(), [&](const ex& s) { return s.is_equal(as[0]); })) {
+    Combiner all;
+    for (std::size_t i = 1; i < sd.size(); ++i) {
+      const ex d = (sd[0] - sd[i]).subs(as[0] == as.back(), GiNaC::subs_options::no_pattern);
+      all.add(second_order_in_eps(c, d, small_ex, c.text(as[0]) + " replaced by its value in " + A.label),
+              sd.size() > 2 ? "side " + std::to_string(i + 1) : "");
+    }
+    return all.result();
+  }
+  // 3. one small quantity eliminated with A's first-order part
+  if (singular.empty() && truncated.size() == 1) {
+    const ex lin = truncated[0].expand();
+    GiNaC::exmap zero;
+    for (const ex& s : small_ex) zero[s] = 0;
+    bool homogeneous = false;
+    try {
+      homogeneous = GiNaC::normal(lin.subs(zero, GiNaC::subs_options::no_pattern)).is_zero();
+    } catch (const std::exception&) {
+    }
+    if (homogeneous) {
+      for (std::size_t j = 0; j < small_ex.size(); ++j) {
+        const ex cj = lin.coeff(small_ex[j], 1);
+        if (cj.is_zero() || !detail::provably_nonzero(cj, c.d.symbols)) continue;
+        const ex dj = GiNaC::normal(small_ex[j] - lin / cj);   // d_j from c_j d_j + rest = 0
+        if (dj.has(small_ex[j])) continue;
+        std::vector<ex> others;
+        for (std::size_t i = 0; i < small_ex.size(); ++i)
+          if (i != j) others.push_back(small_ex[i]);
+        Combiner all;
+        for (std::size_t i = 1; i < sd.size(); ++i) {
+          const ex d = (sd[0] - sd[i]).subs(small_ex[j] == dj, GiNaC::subs_options::no_pattern);
+          all.add(second_order_in_eps(c, d, others, c.text(small_ex[j]) + " = " + c.text(dj) + " from the first-order part of " + A.label),
+                  sd.size() > 2 ? "side " + std::to_string(i + 1) : "");
+        }
+        return all.result();
+      }
+    }
+  }
+  if (!singular.empty())
+    return undecided("first order", singular + "; and the claim's first side is not " + A.label + "'s");
+  return undecided("first order",
+                   "the claim does not follow from the first-order part of " + A.label + " (" + t.detail +
+                       "), and it cannot be compared to first order: its first side is not " + A.label +
+                       "'s, and the first-order part of " + A.label + " gives none of " + names_of(small_ex, c) +
+                       " in terms of the others (a term of order 0, or no coefficient nonzero by the declarations)");
 }
 
 }  // namespace dc::rules

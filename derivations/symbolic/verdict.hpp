@@ -52,6 +52,10 @@ struct Verdict {
   // Refuted: the counterexample (symbol = exact value, in declaration order) and both sides.
   std::vector<std::pair<std::string, std::string>> point;
   std::string lhs_value, rhs_value;
+  // What the two values are, when not the claim's two sides: "limit" and "claimed" for a
+  // limit step (the limit of the expression against the written value). Empty: "left side",
+  // "right side".
+  std::string lhs_label, rhs_label;
 
   // Undecided: residual (deterministic text) and the reason.
   std::string residual;

@@ -141,7 +141,7 @@ std::string dc_file(const json& j) {
     if (j.contains("order")) f << " to order " << field(j, "order");
     f << "\n";
   } else if (kind == "series_first_order") {
-    f << "claim: " << lhs << " = " << rhs << "\n    by series " << var << " -> " << point << "\n";
+    f << "claim: " << lhs << " = " << rhs << "\n    by series " << var << " -> " << point << dir << "\n";
   } else if (kind == "antiderivative") {
     f << "claim: integral(" << lhs << ", " << var << ") = " << rhs << "\n    by integrate\n";
   } else {

@@ -1,7 +1,8 @@
 // The series corpus (tests/data/series.jsonl): truncated expansions as textbooks write them
 // (Taylor, Laurent, Puiseux, log terms, at infinity, physical approximations) and realistic
 // wrong variants (a sign, a coefficient, an order claimed one too high). Each line is a
-// `derivcheck claims` line of kind "series" with the verdict it must get: "proved", "refuted",
+// `derivcheck claims` line of kind "series" (or "series_first_order": agreement to first
+// order, the same test with order 2) with the verdict it must get: "proved", "refuted",
 // or "undecided" where boundedness holds without a limit (not decidable by the method, and
 // never guessed).
 #include <catch2/catch.hpp>

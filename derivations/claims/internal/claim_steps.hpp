@@ -6,7 +6,7 @@
 //   equal               lhs = rhs  by rewrite            (by integrate when a side has integral(...))
 //   limit               lhs = rhs  by limit x -> p[+|-]  (rhs may be oo, -oo, undefined)
 //   series              lhs = rhs  by series x -> p[+|-] to order N
-//   series_first_order  lhs = rhs  by series x -> p
+//   series_first_order  lhs = rhs  by series x -> p[+|-]   (first order: lhs - rhs = O((x - p)^2))
 //   antiderivative      integral(lhs, x) = rhs  by integrate
 //   solves_ode          ode: LHS = RHS  by given         (y, yp, ypp as y(x), diff(y(x), x), diff(y(x), x, 2))
 //                       claim: y(x) = solution  by solves_ode ode wrt x with y(a) = v, y'(b) = w
