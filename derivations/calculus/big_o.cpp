@@ -126,7 +126,6 @@ Verdict remainder_is_big_o(const ex& remainder, const GiNaC::symbol& x, const ex
 
 namespace {
 
-// x in terms of eps: point + eps, or +-1/eps at +-oo
 // One symbol for every call: fresh symbols would shift GiNaC's term order for the rest of the
 // process (limit_engine/budget.hpp, pooled_symbol).
 const GiNaC::symbol& eps_symbol() {
@@ -134,6 +133,7 @@ const GiNaC::symbol& eps_symbol() {
   return eps;
 }
 
+// x in terms of eps: point + eps, or +-1/eps at +-oo
 ex in_eps(const ex& point, int at_infinity, const GiNaC::symbol& eps) {
   return at_infinity != 0 ? ex(at_infinity) / eps : point + eps;
 }
@@ -158,32 +158,6 @@ std::optional<ex> laurent_expansion(const ex& f, const GiNaC::symbol& x, const e
     return out;
   } catch (const std::exception&) {
     return std::nullopt;
-  }
-}
-
-bool polynomial_within_order(const ex& d, const GiNaC::symbol& x, const ex& point, int at_infinity, int order) {
-  if (limits::tree_size(d, 2000) > 2000) return false;
-  const GiNaC::symbol& eps = eps_symbol();
-  try {
-    const ex g = GiNaC::expand(d.subs(x == in_eps(point, at_infinity, eps), GiNaC::subs_options::no_pattern));
-    if (g.is_zero()) return true;
-    // a sum of terms c*eps^k, c free of eps (and of x), k an integer >= order
-    std::vector<ex> terms;
-    if (GiNaC::is_a<GiNaC::add>(g))
-      for (std::size_t i = 0; i < g.nops(); ++i) terms.push_back(g.op(i));
-    else
-      terms.push_back(g);
-    for (const ex& t : terms) {
-      if (t.has(x)) return false;
-      const ex c = t.subs(eps == 1);   // the eps-free part, if t = c*eps^k
-      if (c.has(eps)) return false;
-      const int k = t.degree(eps);
-      if (!(t - c * GiNaC::pow(eps, k)).expand().is_zero()) return false;
-      if (k < order) return false;
-    }
-    return true;
-  } catch (const std::exception&) {
-    return false;
   }
 }
 

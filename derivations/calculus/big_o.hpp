@@ -34,15 +34,9 @@ std::string big_o_text(const GiNaC::symbol& x, const GiNaC::ex& point, int at_in
 // (x - point) (in 1/x at +-oo) below `order`, returned as an expression in x. Evidence only:
 // nullopt when f has no Laurent series there (Puiseux terms, logarithms, essential
 // singularities) or GiNaC fails. S is not checked here: the caller confirms f - S = O(gauge)
-// (remainder_is_big_o, or a cheaper argument) before showing it.
+// (remainder_is_big_o) before showing it.
 std::optional<GiNaC::ex> laurent_expansion(const GiNaC::ex& f, const GiNaC::symbol& x, const GiNaC::ex& point,
                                            int at_infinity, int order);
-
-// Is d, as a function of x near the point, a Laurent polynomial in (x - point) (in 1/x at +-oo)
-// whose every term is O(gauge) (exponents >= order; 0 counts)? A cheap sufficient test that
-// two expansions agree up to the order term.
-bool polynomial_within_order(const GiNaC::ex& d, const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity,
-                             int order);
 
 // A side that ends in its order term, as textbooks and other systems write a truncated series:
 // `x - x^3/6 + O(x^5)` gives rest `x - x^3/6` and arg `x^5`; `O(x^2)` alone gives rest 0.

@@ -70,16 +70,10 @@ Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, cons
   const std::string what_rule =
       first_order_form ? "series (first order, " + o + ")" : "series to order " + std::to_string(order);
   c.res.derived = c.text(f) + " + " + o;
-  const std::optional<ex> expansion = laurent_expansion(f, xs, p, inf, order);
-  bool expansion_shown = false;
-  auto show_expansion = [&] {
-    if (expansion_shown || !expansion) return;
-    expansion_shown = true;
-    c.res.derived = c.text(*expansion) + " + " + o;
-  };
+  // the expansion, computed only for a refuted side (evidence) and shown once confirmed
+  std::optional<std::optional<ex>> expansion;
+  bool confirmed = false;   // f - expansion = O(gauge) shown
   Combiner all;
-  std::vector<std::pair<std::size_t, ex>> compared;   // (index in `all`, side) of the sides that were not proved
-  bool confirmed = false;                               // f - expansion = O(gauge) shown
   for (std::size_t i = first_compared; i < claim.sides.size(); ++i) {
     // name the side only when several are compared (`f = L1 = L2`, or `of A` with two sides)
     std::string what = claim.sides.size() > first_compared + 1 ? "side " + std::to_string(i + 1) : "";
@@ -92,20 +86,18 @@ Verdict series_to_order(StepContext& c, const Relation& claim, const ex& f, cons
     ex g = c.conv(claim.sides[i]);
     Verdict v = remainder_is_big_o(f - g, xs, p, inf, inf ? 0 : rule.dir, order, symbols);
     v.method = what_rule + ": " + v.method;
-    // a proved side that differs from the expansion by terms O(gauge) confirms the expansion
-    if (v.kind == VerdictKind::Proved && expansion && !confirmed &&
-        polynomial_within_order(g - *expansion, xs, p, inf, order))
-      confirmed = true;
-    if (v.kind == VerdictKind::Refuted && expansion) {
-      // the right coefficients, once f - expansion = O(gauge) is shown
-      if (!confirmed)
-        confirmed = remainder_is_big_o(f - *expansion, xs, p, inf, inf ? 0 : rule.dir, order, symbols).kind ==
-                    VerdictKind::Proved;
-      if (confirmed) v.detail += "; the expansion is " + c.text(*expansion) + " + " + o;
+    if (v.kind == VerdictKind::Refuted) {
+      if (!expansion) {
+        expansion = laurent_expansion(f, xs, p, inf, order);
+        confirmed = *expansion && remainder_is_big_o(f - **expansion, xs, p, inf, inf ? 0 : rule.dir, order,
+                                                     symbols).kind == VerdictKind::Proved;
+        if (confirmed) c.res.derived = c.text(**expansion) + " + " + o;
+      }
+      // the right coefficients next to the wrong ones
+      if (confirmed) v.detail += "; the expansion is " + c.text(**expansion) + " + " + o;
     }
     all.add(v, what);
   }
-  if (confirmed) show_expansion();
   return all.result();
 }
 
@@ -285,6 +277,21 @@ Verdict second_order_in_eps(StepContext& c, const ex& d, const std::vector<ex>& 
   return v;
 }
 
+// e stays bounded as eps -> 0+ with every small quantity d_i = eps*d_i (e = O(1)).
+bool bounded_in_eps(StepContext& c, const ex& e, const std::vector<ex>& smalls) {
+  ex eps;
+  const SymbolTable scaled = with_scale(c.d.symbols, eps);
+  GiNaC::exmap by_eps;
+  for (const ex& s : smalls) by_eps[s] = eps * s;
+  try {
+    const ex r = e.subs(by_eps, GiNaC::subs_options::no_pattern);
+    if (!r.has(eps)) return true;
+    return remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 0, scaled).kind == VerdictKind::Proved;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 std::string names_of(const std::vector<ex>& xs, const StepContext& c) {
   std::string out;
   for (const ex& x : xs) out += (out.empty() ? "" : ", ") + c.text(x);
@@ -377,6 +384,20 @@ Verdict first_order(StepContext& c, const Relation& claim) {
         std::vector<ex> others;
         for (std::size_t i = 0; i < small_ex.size(); ++i)
           if (i != j) others.push_back(small_ex[i]);
+        // d_j on A is dj + O(eps^2); replacing it by dj changes a side by O(eps^2) only when the
+        // side's derivative in d_j stays bounded there (not for dv/dm)
+        bool smooth = true;
+        for (std::size_t i = 0; i < sd.size() && smooth; ++i) {
+          const ex dd = GiNaC::diff(sd[i], GiNaC::ex_to<GiNaC::symbol>(small_ex[j]))
+                            .subs(small_ex[j] == dj, GiNaC::subs_options::no_pattern);
+          smooth = bounded_in_eps(c, dd, others);
+        }
+        if (!smooth)
+          return undecided("first order", "the claim does not follow from the first-order part of " + A.label +
+                                              ", and with " + c.text(small_ex[j]) + " = " + c.text(dj) +
+                                              " from it a side's derivative in " + c.text(small_ex[j]) +
+                                              " is not shown bounded, so the O(eps^2) error of that form "
+                                              "need not stay O(eps^2) in the claim");
         Combiner all;
         for (std::size_t i = 1; i < sd.size(); ++i) {
           const ex d = (sd[0] - sd[i]).subs(small_ex[j] == dj, GiNaC::subs_options::no_pattern);
