@@ -181,9 +181,12 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       if (opt.quiet && ok && !r.erratum_reported && s.diagnostics.empty()) continue;
       std::string line = pos_text(s.pos) + ": " + mark(r) + " " + s.label;
       if (!s.tag.empty()) line += " (" + s.tag + ")";
+      // A step whose own error stopped its rule is "not checked" (the error follows), never ✗
+      // beside "undecided".
       line += " " + s.rule.written_name + " \u2014 " +
               (r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
-                                              : verdict_phrase(r.verdict));
+               : own > 0 && r.verdict.kind == VerdictKind::Undecided ? std::string("not checked")
+                                                                     : verdict_phrase(r.verdict));
       if (own > 0) line += "; " + std::to_string(own) + (own == 1 ? " error" : " errors");
       if (r.erratum_reported) line += "; erratum reported";
       if (opt.timings) line += " [" + seconds_text(r.seconds) + "]";

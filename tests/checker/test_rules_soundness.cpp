@@ -557,3 +557,20 @@ TEST_CASE("a refuted limit side: the limit on the left, the side as written on t
   CHECK(c.at("e").verdict.lhs_value == "1");
   CHECK(c.at("e").verdict.rhs_value == "undefined");
 }
+
+TEST_CASE("a step stopped by its own error reads 'not checked', never a cross beside 'undecided'", "[rules][report]") {
+  Checked c = check("stopped.dc",
+                    "symbol x, y, z : real [1]\n"
+                    "a: x = 2*y\n    by given\n"
+                    "b: z = 3\n    by solve a for z\n");
+  dc::FileReport f;
+  f.file = "stopped.dc";
+  f.derivation = *c.d;
+  f.summary = c.sum;
+  const std::string text = dc::format_text({f}, {});
+  CHECK(text.find("b solve \u2014 not checked; 1 error") != std::string::npos);
+  CHECK(text.find("undecided (solve)") == std::string::npos);
+  CHECK(text.find("error: the unknown 'z' does not appear in the equations") != std::string::npos);
+  CHECK(c.sum.errors == 1);
+  CHECK(c.sum.undecided == 0);
+}
