@@ -168,6 +168,7 @@ void DcReader::assume_statement(const Span& s, const SourcePos& at) {
                                                           s.text.substr(ops.back().at, ops.back().len) + "'"));
   std::vector<GiNaC::ex> ex;
   for (const auto& n : sides) ex.push_back(converted(n));
+  warn_assumption_dimensions(sides);
   std::size_t b = 0, e = s.text.size();
   trim_range(s.text, b, e);
   for (std::size_t i = 0; i < ops.size(); ++i) {
@@ -186,6 +187,36 @@ void DcReader::assume_statement(const Span& s, const SourcePos& at) {
       fail(e.pos(), e.message(), e.length());
     }
     d_.symbols.add_constraint(std::move(c));
+  }
+}
+
+// An assumption compares quantities of one dimension (`m*b^2 <= g*M*L` does not): a mismatch
+// is a positioned warning at the side that differs from the first; the assumption still
+// applies as written. A literal 0 has every dimension.
+void DcReader::warn_assumption_dimensions(const std::vector<Node>& sides) {
+  const Node* first = nullptr;
+  Dimension first_dim;
+  for (const Node& side : sides) {
+    const Node* z = &side;
+    while (z->kind == NodeKind::Neg) z = &z->args[0];
+    if (z->kind == NodeKind::Number && z->text.find_first_not_of("0.") == std::string::npos) continue;
+    Dimension dim;
+    try {
+      dim = dimension_of(side, d_.symbols);
+    } catch (const InputError&) {
+      return;   // a dimension error inside a side is reported where the side is used
+    }
+    if (!first) {
+      first = &side;
+      first_dim = dim;
+    } else if (dim != first_dim) {
+      d_.diagnostics.push_back(InputError::warning(
+          side.pos,
+          "the assumption compares '" + to_text(*first) + "' (dimension " + first_dim.to_string() + ") with '" +
+              to_text(side) + "' (dimension " + dim.to_string() + "); it still applies as written",
+          side.length, d_.source.line(side.pos.line)));
+      return;
+    }
   }
 }
 

@@ -90,6 +90,9 @@ struct Derivation {
   std::vector<Step> steps;
   std::vector<Prose> prose;  // in file order
   bool dot_derivatives = false;   // `notation dot`: the LaTeX writes d/dt of x(t) as \dot{x}
+  // Positioned warnings about the file's declarations that stop nothing (an assumption whose
+  // sides have different dimensions); a step's own are in Step::diagnostics.
+  std::vector<InputError> diagnostics;
 
   const Step* find(const std::string& label) const;
 

@@ -173,6 +173,7 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       continue;
     }
     const Derivation& d = *f.derivation;
+    for (const auto& w : d.diagnostics) out += w.format();
     for (std::size_t i = 0; i < f.summary.results.size(); ++i) {
       const StepResult& r = f.summary.results[i];
       const Step& s = d.steps[i];
@@ -234,6 +235,15 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
     const Derivation& d = *f.derivation;
     o["title"] = d.title;
     o["section"] = d.section;
+    if (!d.diagnostics.empty()) {
+      nlohmann::ordered_json ws = nlohmann::ordered_json::array();
+      for (const auto& w : d.diagnostics) {
+        nlohmann::ordered_json wj = error_json(w);
+        wj["severity"] = w.severity_word();
+        ws.push_back(wj);
+      }
+      o["diagnostics"] = ws;
+    }
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < f.summary.results.size(); ++i) {
       const StepResult& r = f.summary.results[i];

@@ -574,3 +574,32 @@ TEST_CASE("a step stopped by its own error reads 'not checked', never a cross be
   CHECK(c.sum.errors == 1);
   CHECK(c.sum.undecided == 0);
 }
+
+TEST_CASE("an assumption whose sides have different dimensions is a positioned warning and still applies",
+          "[rules][dimensions]") {
+  Checked c = check("dim_assume.dc",
+                    "symbol m, M : positive [kg]\n"
+                    "symbol b, L : positive [m]\n"
+                    "symbol g : positive [m/s^2]\n"
+                    "assume m*b^2 <= g*M*L\n"
+                    "assume b <= L\n"
+                    "assume 0 < b - L/10\n"
+                    "ok: b/L = b/L\n    by rewrite\n");
+  REQUIRE(c.d->diagnostics.size() == 1);
+  const dc::InputError& w = c.d->diagnostics[0];
+  CHECK(w.severity() == dc::InputError::Severity::Warning);
+  CHECK(w.pos().line == 4);
+  CHECK(w.pos().col == 17);   // at g*M*L
+  CHECK(w.message().find("'m*b^2' (dimension") != std::string::npos);
+  CHECK(w.message().find("it still applies as written") != std::string::npos);
+  CHECK(c.d->symbols.constraints().size() == 3);   // the assumption is kept
+  dc::FileReport f;
+  f.file = "dim_assume.dc";
+  f.derivation = *c.d;
+  f.summary = c.sum;
+  CHECK(dc::format_text({f}, {}).find("dim_assume.dc:4:17: warning: the assumption compares") != std::string::npos);
+  const auto j = dc::to_json({f}, {});
+  REQUIRE(j["files"][0].contains("diagnostics"));
+  CHECK(j["files"][0]["diagnostics"][0]["severity"] == "warning");
+  CHECK(c.sum.exit_code(false) == dc::kExitOk);   // a warning does not change the exit code
+}

@@ -164,6 +164,7 @@ class DcReader {
   bool names_new_quantity(const Step& step) const;
   bool names_operation_result(const Step& step) const;
   void note_bound_names(Step& step) const;
+  void warn_assumption_dimensions(const std::vector<Node>& sides);
   void validate_side(const Node& n);
   static bool contains_integral(const Node& n);
   static std::string normalise_ws(const std::string& t);
