@@ -98,17 +98,20 @@ bool collect(const ex& e, const symbol& x, std::vector<Condition>& out) {
   return true;
 }
 
+// x's entry in t, declared real there when t does not know it (a bound variable).
+const SymbolInfo* declared_in(SymbolTable& t, const symbol& x) {
+  if (const SymbolInfo* info = t.find(x)) return info;
+  SymbolInfo si;
+  si.name = x.get_name();
+  si.sym = x;
+  si.domain = Domain::real();
+  return &t.declare(si);
+}
+
 // A table in which x ranges over the open interval (lo, hi) (everything else as in ctx).
 SymbolTable restricted(const SymbolTable& ctx, const symbol& x, const End& lo, const End& hi) {
   SymbolTable t = ctx;
-  const SymbolInfo* info = ctx.find(x);
-  if (!info) {
-    SymbolInfo si;
-    si.name = x.get_name();
-    si.sym = x;
-    si.domain = Domain::real();
-    info = &t.declare(si);
-  }
+  const SymbolInfo* info = declared_in(t, x);
   const std::string name = info->name;
   const bool numeric_ends = (lo.inf || is_a<numeric>(lo.at.evalf())) && (hi.inf || is_a<numeric>(hi.at.evalf()));
   if (lo.inf == 0 && hi.inf == 0 && numeric_ends) {
@@ -215,14 +218,7 @@ std::optional<Hull> hull_of_limits(const ex& a, const ex& b, const symbol& x, co
   }
   if (lo.inf && hi.inf) return std::nullopt;
   Hull h{lo, hi, ctx, ""};
-  const SymbolInfo* info = ctx.find(x);
-  if (!info) {
-    SymbolInfo si;
-    si.name = x.get_name();
-    si.sym = x;
-    si.domain = Domain::real();
-    info = &h.table.declare(si);
-  }
+  const SymbolInfo* info = declared_in(h.table, x);
   Domain d = Domain::real();
   const numeric l = ex_to<numeric>(lo.at), u = ex_to<numeric>(hi.at);
   if (!lo.inf && !hi.inf) d = Domain::interval(lo.at, !lo.closed, hi.at, !hi.closed);

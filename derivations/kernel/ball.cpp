@@ -505,10 +505,13 @@ long bits_to_digits(long bits) { return static_cast<long>(bits / 3.3219280948873
 
 Ball enclose(const ex& constant, long prec_bits) { return enclose_at(constant, nullptr, prec_bits); }
 
-Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) {
+namespace {
+
+// e at a point, over a box of intervals, or (both null) as a constant.
+Ball enclose_with(const ex& e, const GiNaC::exmap* point, const Box* box, long prec_bits) {
   Ball b;
   b.prec_bits = prec_bits;
-  BallEvaluator ev(prec_bits, point);
+  BallEvaluator ev(prec_bits, point, box);
   try {
     b.status = ev.eval(e, b.impl->v);
   } catch (const std::exception&) {
@@ -519,19 +522,11 @@ Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) {
   return b;
 }
 
-Ball enclose_box(const ex& e, const Box& box, long prec_bits) {
-  Ball b;
-  b.prec_bits = prec_bits;
-  BallEvaluator ev(prec_bits, nullptr, &box);
-  try {
-    b.status = ev.eval(e, b.impl->v);
-  } catch (const std::exception&) {
-    b.status = BallStatus::Unknown;
-    ev.why = "evaluation failed";
-  }
-  b.why = ev.why;
-  return b;
-}
+}  // namespace
+
+Ball enclose_at(const ex& e, const GiNaC::exmap* point, long prec_bits) { return enclose_with(e, point, nullptr, prec_bits); }
+
+Ball enclose_box(const ex& e, const Box& box, long prec_bits) { return enclose_with(e, nullptr, &box, prec_bits); }
 
 bool certainly_nonnegative(const Ball& b) { return b.status == BallStatus::Value && arb_is_nonnegative(b.impl->v); }
 

@@ -197,9 +197,7 @@ void DcReader::warn_assumption_dimensions(const std::vector<Node>& sides) {
   const Node* first = nullptr;
   Dimension first_dim;
   for (const Node& side : sides) {
-    const Node* z = &side;
-    while (z->kind == NodeKind::Neg) z = &z->args[0];
-    if (z->kind == NodeKind::Number && z->text.find_first_not_of("0.") == std::string::npos) continue;
+    if (is_literal_zero(side)) continue;
     Dimension dim;
     try {
       dim = dimension_of(side, d_.symbols);

@@ -45,6 +45,17 @@ nlohmann::ordered_json error_json(const InputError& e) {
   return j;
 }
 
+// Warnings and notes, each as error_json with its severity.
+nlohmann::ordered_json diagnostics_json(const std::vector<InputError>& ds) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& w : ds) {
+    nlohmann::ordered_json wj = error_json(w);
+    wj["severity"] = w.severity_word();
+    out.push_back(wj);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string verdict_phrase(const Verdict& v) {
@@ -235,15 +246,7 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
     const Derivation& d = *f.derivation;
     o["title"] = d.title;
     o["section"] = d.section;
-    if (!d.diagnostics.empty()) {
-      nlohmann::ordered_json ws = nlohmann::ordered_json::array();
-      for (const auto& w : d.diagnostics) {
-        nlohmann::ordered_json wj = error_json(w);
-        wj["severity"] = w.severity_word();
-        ws.push_back(wj);
-      }
-      o["diagnostics"] = ws;
-    }
+    if (!d.diagnostics.empty()) o["diagnostics"] = diagnostics_json(d.diagnostics);
     nlohmann::ordered_json steps = nlohmann::ordered_json::array();
     for (std::size_t i = 0; i < f.summary.results.size(); ++i) {
       const StepResult& r = f.summary.results[i];
@@ -269,15 +272,7 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
       for (const auto& e : r.errors) errs.push_back(error_json(e));
       j["errors"] = errs;
       j["erratum_reported"] = r.erratum_reported;
-      if (!s.diagnostics.empty()) {
-        nlohmann::ordered_json ws = nlohmann::ordered_json::array();
-        for (const auto& w : s.diagnostics) {
-          nlohmann::ordered_json wj = error_json(w);
-          wj["severity"] = w.severity_word();
-          ws.push_back(wj);
-        }
-        j["diagnostics"] = ws;
-      }
+      if (!s.diagnostics.empty()) j["diagnostics"] = diagnostics_json(s.diagnostics);
       if (!s.notes.empty()) j["notes"] = s.notes;
       if (opt.timings) j["seconds"] = r.seconds;
       steps.push_back(j);

@@ -26,9 +26,7 @@ void check_dimensions(const Derivation& d, const Step& s, const Relation& claim,
   for (const auto& side : claim.sides) {
     if (limit_value_side(s, side, d.symbols)) continue;   // oo, -oo, undefined
     // A literal 0 has every dimension (`m_p*v_p - m_c*v_c = 0`).
-    const Node* z = &side;
-    while (z->kind == NodeKind::Neg) z = &z->args[0];
-    if (z->kind == NodeKind::Number && z->text.find_first_not_of("0.") == std::string::npos) continue;
+    if (is_literal_zero(side)) continue;
     nodes.push_back(&side);
     try {
       dims.push_back(dimension_of(side, d.symbols));

@@ -127,5 +127,7 @@ Integrand integrand_of(const Node& integral, const SymbolTable& table);
 // "cannot add kg·m/s and kg·m²/s²" at the '+'. Symbols without a declared dimension
 // (has_dimension false) count as dimensionless; a literal 0 in a sum takes any dimension.
 Dimension dimension_of(const Node& n, const SymbolTable& table);
+// A literal 0, possibly negated (`0`, `-0.0`): it has every dimension.
+bool is_literal_zero(const Node& n);
 
 }  // namespace dc

@@ -461,11 +461,6 @@ class Converter {
 
 // ---- dimension_of --------------------------------------------------------------------------
 
-bool is_literal_zero(const Node& n) {
-  if (n.kind == NodeKind::Neg) return is_literal_zero(n.args[0]);
-  return n.kind == NodeKind::Number && n.text.find_first_not_of("0.") == std::string::npos;
-}
-
 // The exact value of a constant exponent (numbers with + - * / and parentheses), or false.
 bool constant_number(const Node& n, GiNaC::numeric& out) {
   switch (n.kind) {
@@ -685,5 +680,10 @@ CalculusHooks g_calculus_hooks;
 
 void set_calculus_hooks(const CalculusHooks& hooks) { g_calculus_hooks = hooks; }
 const CalculusHooks& calculus_hooks() { return g_calculus_hooks; }
+
+bool is_literal_zero(const Node& n) {
+  if (n.kind == NodeKind::Neg) return is_literal_zero(n.args[0]);
+  return n.kind == NodeKind::Number && n.text.find_first_not_of("0.") == std::string::npos;
+}
 
 }  // namespace dc
