@@ -277,10 +277,28 @@ Verdict solve(StepContext& c, const Relation& claim) {
   // `u = G` for an unknown u; each equation, with u = G and the other unknowns eliminated,
   // must reduce to an identity.
   ex lhs = u.in(c, sd[0]);
-  for (std::size_t i = 0; i < u.syms.size(); ++i)
-    if (lhs.is_equal(u.syms[i])) return substitute_back(c, u, E, in_eqs, sd, i);
   std::vector<ex> preferred;
   for (auto& x : u.syms) preferred.push_back(u.out(c, x));
+  for (std::size_t i = 0; i < u.syms.size(); ++i) {
+    if (!lhs.is_equal(u.syms[i])) continue;
+    Verdict back = substitute_back(c, u, E, in_eqs, sd, i);
+    if (back.holds() || back.kind == VerdictKind::Refuted) return back;
+    // Substituting back could not decide. A claim that follows from the equations (every
+    // point satisfying them has u = G) is their only root: the equations that are linear in
+    // the unknowns, solved one at a time (an overdetermined linear system, or one made linear
+    // by eliminating another unknown first), decide it. A certified point that satisfies the
+    // equations with u != G is a root the claim misses: refuted, as for another root.
+    const std::string derived = c.res.derived;
+    Verdict f = links_follow(c, sd, eqs, "solve (elimination)", preferred);
+    if (f.holds() || f.kind == VerdictKind::Refuted) {
+      c.res.derived = "the claim " + c.text(u.out(c, lhs)) + " = " + c.text(u.out(c, u.in(c, sd.back()))) +
+                      (f.holds() ? " follows from the equations, so it is their only root"
+                                 : " does not follow from the equations: a point satisfies them with another value");
+      return f;
+    }
+    c.res.derived = derived;
+    return back;
+  }
   return links_follow(c, sd, eqs, "solve (elimination)", preferred);
 }
 
