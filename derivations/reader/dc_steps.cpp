@@ -442,7 +442,21 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
     if (group("of")) spec.into = labels(s, *group("of"), "the label of the step to take the " + r + " of", 1);
   } else if (r == "first_order") {
     if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the small quantities" + usage(r));
-    for (auto& it : pre_items) spec.smalls.push_back(symbol_arg(s, it.first, it.second));
+    // a small quantity is a symbol or a declared function (theta, or theta(t) as written):
+    // a small function is small with all its derivatives
+    for (auto& it : pre_items) {
+      const RuleArg a = spanned(s, it.first, it.second);
+      const SymbolInfo* info = d_.symbols.find(a.label);
+      if (plain_identifier(s, it.first, it.second) && info && info->is_function) {
+        RuleArg f = a;
+        f.kind = RuleArg::Kind::Symbol;
+        spec.smalls.push_back(f);
+      } else if (plain_identifier(s, it.first, it.second)) {
+        spec.smalls.push_back(symbol_arg(s, it.first, it.second));
+      } else {
+        spec.smalls.push_back(value_arg(s, it.first, it.second));
+      }
+    }
     spec.into = labels(s, require("of"), "the label of the step to expand", 1);
   } else if (r == "differentiate" || r == "integrate" || r == "solves_ode") {
     // differentiate and integrate may work on the claim's own diff(...) / integral(...)

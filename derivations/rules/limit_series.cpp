@@ -7,10 +7,13 @@
 // to first order), decided by the remainder gauge (big_o.hpp). first_order: agreement to first
 // order in small quantities scaled by one eps (see first_order below).
 #include <algorithm>
+#include <functional>
+#include <map>
 
 #include "derivations/calculus/big_o.hpp"
 #include "derivations/calculus/limit_entry.hpp"
 #include "derivations/kernel/range.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
 
@@ -313,17 +316,58 @@ std::string names_of(const std::vector<ex>& xs, const StepContext& c) {
 // (an exact claim such as y^2 = 1 + d for y = sqrt(1 + d) agrees to first order, yet does not
 // follow from the truncated y = 1 + d/2).
 Verdict first_order(StepContext& c, const Relation& claim) {
-  std::vector<GiNaC::symbol> smalls;
-  std::vector<ex> small_ex;
-  for (const auto& a : c.rule().smalls) {
-    small_ex.push_back(c.symbol_of(a));
-    smalls.push_back(GiNaC::ex_to<GiNaC::symbol>(small_ex.back()));
-  }
   const RuleArg& ref = c.rule().into[0];
   const Step& A = c.ref_step(ref);
   std::vector<ex> sd = c.sides(claim);
   if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by first_order' must be an equation");
-  const std::vector<Eq> a_eqs = c.equations(ref);
+  std::vector<Eq> a_eqs = c.equations(ref);
+  std::vector<ex> as = c.sides(claim_of(A));
+  // The small quantities as symbols. A small declared function theta is small with all its
+  // derivatives (theta = eps*delta makes theta(t), diff(theta(t), t), ... each eps times a
+  // value): every application and derivative of it in A and the claim becomes a stand-in
+  // symbol named as written.
+  std::vector<GiNaC::symbol> smalls;
+  std::vector<ex> small_ex;
+  GiNaC::exmap standin;
+  for (const auto& a : c.rule().smalls) {
+    const SymbolInfo* info = a.kind == RuleArg::Kind::Symbol ? c.d.symbols.find(a.label) : nullptr;
+    int fn = info && info->is_function ? c.d.symbols.function_index(a.label) : -1;
+    if (a.kind == RuleArg::Kind::Value) {
+      const ex e = c.conv(a.value);
+      if (pool_derivative_order(e) != 0)
+        c.fail(a.pos, "expected a small quantity: a symbol or a declared function such as theta(t)", a.length);
+      fn = pool_function_index(e);
+    }
+    if (fn < 0) {
+      small_ex.push_back(c.symbol_of(a));
+      smalls.push_back(GiNaC::ex_to<GiNaC::symbol>(small_ex.back()));
+      continue;
+    }
+    std::map<std::string, ex> found;   // by text: a deterministic order
+    std::function<void(const ex&)> collect = [&](const ex& e) {
+      if (pool_function_index(e) == fn) {
+        found.emplace(c.text(e), e);
+        return;
+      }
+      for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i));
+    };
+    for (const auto& q : a_eqs) collect(q.e);
+    for (const auto& e : sd) collect(e);
+    if (found.empty())
+      c.fail(a.pos, "the small function '" + a.label + "' appears neither in the claim nor in " + A.label, a.length);
+    for (const auto& [text, e] : found) {
+      if (standin.count(e)) continue;
+      GiNaC::realsymbol s(text);
+      standin[e] = s;
+      smalls.push_back(s);
+      small_ex.push_back(s);
+    }
+  }
+  if (!standin.empty()) {
+    for (auto& q : a_eqs) q.e = q.e.subs(standin, GiNaC::subs_options::no_pattern);
+    for (auto& e : sd) e = e.subs(standin, GiNaC::subs_options::no_pattern);
+    for (auto& e : as) e = e.subs(standin, GiNaC::subs_options::no_pattern);
+  }
   std::vector<Eq> eqs;
   std::vector<ex> truncated;
   std::string derived;
@@ -346,7 +390,6 @@ Verdict first_order(StepContext& c, const Relation& claim) {
     if (t.holds()) return t;
   }
   // 2. the same first side as A
-  const std::vector<ex> as = c.sides(claim_of(A));
   if (as.size() >= 2 && prove_equal(sd[0], as[0], c.d.symbols, c.opt).kind == VerdictKind::Proved) {
     Combiner all;
     for (std::size_t i = 1; i < sd.size(); ++i)
