@@ -161,8 +161,17 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
     if (v.kind != VerdictKind::Refuted) break;
     Gap gap = counterexample_gap(c, red, eqs, v);
     if (gap.why.empty()) break;
-    if (gap.elimination && attempt < 3 && bans.insert({gap.elimination->equation, gap.elimination->key}).second)
-      continue;
+    if (gap.elimination && attempt < 4) {
+      // That choice banned; when the same quantity is eliminated again (the references hold at
+      // several points, each instance can eliminate it), it is banned from every equation: it
+      // stays free, sampled in its declared domain.
+      const std::string& key = gap.elimination->key;
+      const bool again = std::any_of(bans.begin(), bans.end(), [&](const auto& b) { return b.second == key; });
+      bool added = bans.insert({gap.elimination->equation, key}).second;
+      if (again)
+        for (int i = 0; i < static_cast<int>(eqs.size()); ++i) added = bans.insert({i, key}).second || added;
+      if (added) continue;
+    }
     std::string after = red.eliminated.empty() ? "" : " after eliminating " + eliminated_text(c, red);
     Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
     u.residual = c.text(ra - rb);

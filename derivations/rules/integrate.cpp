@@ -2,12 +2,17 @@
 //   - the claim `integral(f, x, a, b) = G`: dG/db = f(b) and G = 0 at b = a (or, when the
 //     upper limit also appears in the integrand, rigorous quadrature at sampled parameters);
 //   - the ODE form: the reference A is `diff(Y, t) = f` and the claim `Y = G`: dG/dt = f with
-//     Y = G, and G takes the initial value at T0.
+//     Y = G, and G takes the initial value at T0;
+//   - its change form: the claim `Y(b) - Y(a) = G` (or `= integral(g, t, a, b) = G`, the
+//     fundamental theorem), see change_form.
 // The references hold at the bounds: only equations between function applications of t hold
 // for every t (see has_application_at); the others are used as they are.
 #include <functional>
+#include <map>
+#include <optional>
 
 #include "derivations/calculus/integral_equal.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "derivations/rules/dispatch.hpp"
@@ -27,9 +32,16 @@ std::vector<Eq> at_points(const std::vector<Eq>& eqs, const ex& t, const std::ve
 }
 
 // integral(f, x, a, b) = G (side0 is the integral, resolved).
-Verdict definite_integral(StepContext& c, const Relation& claim, const Node& side0, const ex& t,
+// A name that a cited given expresses through t (`q = (m0 + k*t)*u`) is that function of t
+// in the claim (names_through, context.hpp): its integral is the integral of its value.
+Verdict definite_integral(StepContext& c, const Relation& claim, const Node& side0_in, const ex& t,
                           const std::vector<Eq>& ref_eqs) {
   const SymbolTable& symbols = c.d.symbols;
+  const ThroughT through_t = names_through(c, t);
+  const Node side0 = through_t.resolve(side0_in);
+  std::vector<ex> sd{ex(0)};   // the closed forms (side 0, the integral, is not converted)
+  for (std::size_t i = 1; i < claim.sides.size(); ++i)
+    sd.push_back(c.conv(through_t.resolve(resolve_definitions(c.d, claim.sides[i]))));
   if (side0.args.size() != 4) c.fail(side0.pos, "expected integral(f, x, a, b)", side0.length);
   if (!to_ginac(side0.args[1], symbols).is_equal(t))
     c.fail(side0.args[1].pos, "the integration variable must be the rule's 'wrt' variable", side0.args[1].length);
@@ -51,7 +63,7 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
   // wherever it is defined).
   bool continuous = continuous_everywhere(f, GiNaC::ex_to<GiNaC::symbol>(x));
   for (std::size_t i = 1; i < claim.sides.size() && continuous; ++i)
-    continuous = continuous_everywhere(c.conv(claim.sides[i]), GiNaC::ex_to<GiNaC::symbol>(b));
+    continuous = continuous_everywhere(sd[i], GiNaC::ex_to<GiNaC::symbol>(b));
   if (f.has(b) || !continuous) {
     // The upper limit also appears in the integrand (d/db of the integral is not f(b)), or the
     // integrand is not known to be continuous between the limits (1/x from -1 to b: the
@@ -64,7 +76,7 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
       refs_independent =
           refs_independent && detail::has_abstract_application(q.e) && !detail::has_abstract_application(f);
     for (std::size_t i = 1; i < claim.sides.size(); ++i) {
-      ex G = c.conv(claim.sides[i]);
+      ex G = sd[i];
       refs_independent = refs_independent && !detail::has_abstract_application(G);
       Verdict v = kernel::probe_definite_integral(f, GiNaC::ex_to<GiNaC::symbol>(x), a, b, G, symbols, c.opt);
       if (v.kind == VerdictKind::Refuted && !refs_independent)
@@ -75,10 +87,11 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
     c.res.derived = f.has(b) ? "the integrand depends on the upper limit " + c.text(b) + ": checked by rigorous quadrature"
                              : "the integrand or the closed form is not known to be continuous between the limits: "
                                "checked by rigorous quadrature";
+    if (!through_t.given_values.empty()) c.res.derived += "; " + through_t.evidence;
     return all.result();
   }
   for (std::size_t i = 1; i < claim.sides.size(); ++i) {
-    ex G = c.conv(claim.sides[i]);
+    ex G = sd[i];
     Verdict v1 = follows(c, G.diff(bs), f.subs(x == b), eqs);
     v1.method = prefix_method("d/d" + c.text(b) + " of the closed form", v1.method);
     all.add(v1, "side " + std::to_string(i + 1) + ", derivative");
@@ -87,28 +100,123 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
     all.add(v2, "side " + std::to_string(i + 1) + ", at " + c.text(b) + " = " + c.text(a));
     if (i == 1) c.res.derived = "d/d" + c.text(b) + " (" + c.text(G) + ") = " + c.text(G.diff(bs));
   }
+  if (!through_t.given_values.empty()) c.res.derived += "; " + through_t.evidence;
   return all.result();
 }
 
-// The ODE form: A is diff(Y, t) = f; the claim is Y = G.
-Verdict ode_form(StepContext& c, const Relation& claim, const ex& t, const ex& T0) {
+// The cited ODE `diff(Y, t) = f` (the first reference).
+struct Ode {
+  ex Y, f;
+  Node y_node;
+};
+
+Ode ode_of(StepContext& c) {
   const RuleSpec& rule = c.rule();
-  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
   const Relation& ar = claim_of(c.ref_step(rule.refs[0]));
   Node alhs = resolve_definitions(c.d, ar.sides[0]);
   if (ar.sides.size() < 2 || alhs.kind != NodeKind::Call || alhs.text != "diff" || alhs.args.size() < 2 ||
       (alhs.args.size() == 3 && to_text(alhs.args[2]) != "1"))
     c.fail(rule.refs[0].pos, "'" + rule.refs[0].label + "' must be an ODE 'diff(y(t), t) = f' for 'by integrate'",
            rule.refs[0].length);
-  ex Y = to_ginac(alhs.args[0], c.d.symbols);
-  ex f = c.conv(ar.sides.back());
+  return {to_ginac(alhs.args[0], c.d.symbols), c.conv(ar.sides.back()), alhs.args[0]};
+}
+
+// `Y(b) - Y(a) = G  by integrate A wrt t [from a]`, and the fundamental-theorem chain
+// `Y(b) - Y(a) = integral(g, t, a, b) = G`: the claim's first side is the change of the ODE's
+// function between two points, b a symbol. Every further side must equal it:
+//   - an integral from a to b whose integrand equals f (the references hold at every t);
+//   - a closed form G: with Y(b) = Y(a) + G, dG/db = f at t = b and G = 0 at b = a (the
+//     initial value problem in b that the change solves; f and G continuous, so it is the
+//     integral of f from a to b).
+// nullopt when the first side is not such a change.
+std::optional<Verdict> change_form(StepContext& c, const Relation& claim, const ex& t, const Ode& ode,
+                                   const std::vector<Eq>& ref_eqs) {
+  const int fn = pool_function_index(ode.Y);
+  if (fn < 0 || pool_derivative_order(ode.Y) != 0 || claim.sides.size() < 2) return std::nullopt;
+  const ex cl = c.conv(claim.sides[0]);
+  std::map<std::string, ex> at;   // the points where the claim's first side takes Y, by text
+  bool plain = true;
+  std::function<void(const ex&)> collect = [&](const ex& e) {
+    if (pool_function_index(e) == fn) {
+      plain = plain && pool_derivative_order(e) == 0;
+      if (e.nops() == 1) at.emplace(c.text(e.op(0)), e.op(0));
+      return;
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i));
+  };
+  collect(cl);
+  if (!plain || at.size() != 2) return std::nullopt;
+  const ex p = at.begin()->second, q = std::next(at.begin())->second;
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  ex a, b;
+  bool found = false;
+  for (const auto& [hi, lo] : {std::pair{p, q}, std::pair{q, p}}) {
+    if (!GiNaC::is_a<GiNaC::symbol>(hi)) continue;
+    const ex change = ode.Y.subs(t == hi) - ode.Y.subs(t == lo);
+    if (cl.is_equal(change) || prove_equal(cl, change, c.d.symbols, c.opt).kind == VerdictKind::Proved) {
+      a = lo, b = hi, found = true;
+      break;
+    }
+  }
+  if (!found) return std::nullopt;
+  const RuleSpec& rule = c.rule();
+  if (rule.point && !c.conv(rule.point->value).is_equal(a))
+    c.fail(rule.point->pos, "the claim is the change of " + c.text(ode.Y) + " from " + c.text(a) + " to " + c.text(b) +
+                                ": the lower end after 'from' must be " + c.text(a),
+           rule.point->length);
+  const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
+  const ex Ya = ode.Y.subs(t == a), Yb = ode.Y.subs(t == b);
+  const std::vector<Eq> at_ends = at_points(ref_eqs, t, {b, a});
+  const bool f_continuous = continuous_everywhere(ode.f, ts);
+  Combiner all;
+  for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+    const std::string what = "side " + std::to_string(i + 1);
+    const Node side = resolve_definitions(c.d, claim.sides[i]);
+    if (side.kind == NodeKind::Call && side.text == "integral" && side.args.size() == 4) {
+      const Integrand in = integrand_of(side, c.d.symbols);
+      Verdict lo = prove_equal(to_ginac(side.args[2], c.d.symbols), a, c.d.symbols, c.opt);
+      Verdict hi = prove_equal(to_ginac(side.args[3], c.d.symbols), b, c.d.symbols, c.opt);
+      lo.method = prefix_method("lower limit", lo.method);
+      hi.method = prefix_method("upper limit", hi.method);
+      all.add(lo, what + ", lower limit " + c.text(a));
+      all.add(hi, what + ", upper limit " + c.text(b));
+      Verdict g = follows(c, in.f.subs(in.x == t, GiNaC::subs_options::no_pattern), ode.f, ref_eqs);
+      g.method = prefix_method("the integrand is d/d" + c.text(t) + " " + c.text(ode.Y), g.method);
+      all.add(g, what + ", integrand");
+      continue;
+    }
+    const ex G = c.conv(claim.sides[i]);
+    if (G.has(Yb) || !f_continuous || !continuous_everywhere(G, bs)) {
+      all.add(undecided("integrate", "the right side of the ODE or the closed form " + c.text(G) +
+                                         " is not known to be continuous between " + c.text(a) + " and " + c.text(b)),
+              what);
+      continue;
+    }
+    const ex fb = ode.f.subs(t == b).subs(Yb == Ya + G, GiNaC::subs_options::no_pattern);
+    Verdict v1 = follows(c, G.diff(bs), fb, at_ends);
+    v1.method = prefix_method("d/d" + c.text(b) + " of the closed form", v1.method);
+    all.add(v1, what + ", derivative");
+    Verdict v2 = follows(c, G.subs(bs == a), 0, at_ends);
+    v2.method = prefix_method("value at " + c.text(b) + " = " + c.text(a), v2.method);
+    all.add(v2, what + ", at " + c.text(b) + " = " + c.text(a));
+    if (c.res.derived.empty()) c.res.derived = "d/d" + c.text(b) + " (" + c.text(G) + ") = " + c.text(G.diff(bs));
+  }
+  return all.result();
+}
+
+// The ODE form: A is diff(Y, t) = f; the claim is Y = G.
+Verdict ode_form(StepContext& c, const Relation& claim, const ex& t, const ex& T0, const Ode& ode) {
+  const RuleSpec& rule = c.rule();
+  const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+  const ex Y = ode.Y, f = ode.f;
   if (claim.sides.size() < 2) c.fail(c.s.claim_pos, "expected the claim 'y(t) = G'");
   ex cl = c.conv(claim.sides[0]);
   if (!cl.is_equal(Y)) {
     Verdict v = prove_equal(cl, Y, c.d.symbols, c.opt);
     if (!v.holds())
       c.fail(claim.sides[0].pos,
-             "the claim must start with '" + to_text(alhs.args[0]) + " = ...' (the function of the ODE)",
+             "the claim must start with '" + to_text(ode.y_node) + " = ...' (the function of the ODE), or be its "
+             "change '" + to_text(ode.y_node) + " at b - at a = ...'",
              claim.sides[0].length);
   }
   // initial value
@@ -207,12 +315,14 @@ Verdict integrate(StepContext& c, const Relation& claim) {
     c.fail(rule.pos, "without a cited ODE the claim of 'by integrate' must be 'integral(f, x, a, b) = G'; to solve an ODE "
                      "write 'by integrate A wrt t from T0' with A the ODE 'diff(y(t), t) = f'",
            static_cast<int>(rule.text.size()));
+  const Ode ode = ode_of(c);
+  if (auto v = change_form(c, claim, t, ode, ref_eqs)) return *v;
   if (!rule.point)
     c.fail(rule.pos, "the ODE form of 'by integrate' needs the initial time: 'by integrate " + rule.refs[0].label +
                          " wrt " + rule.var->label + " from T0'",
            static_cast<int>(rule.text.size()));
   ex T0 = c.conv(rule.point->value);
-  return ode_form(c, claim, t, T0);
+  return ode_form(c, claim, t, T0, ode);
 }
 
 }  // namespace dc::rules
