@@ -519,6 +519,10 @@ Derivation load_derivation(const std::string& path) {
   return parse_derivation(std::move(src));
 }
 
+Node substitute_names(const Node& n, const std::map<std::string, const Node*>& values) {
+  return substitute_params(n, values);
+}
+
 Node resolve_definitions(const Derivation& d, const Node& n) {
   Definitions defs(d);
   if (defs.empty()) return n;

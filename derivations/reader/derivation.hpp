@@ -131,6 +131,8 @@ bool introduces_name(const Step& s);
 // (NEW or NEW(t)) is replaced by its defining expression (parameters substituted).
 // (additive: engineer "checker")
 Node resolve_definitions(const Derivation& d, const Node& n);
+// n with each symbol named in `values` replaced by its value (parenthesized).
+Node substitute_names(const Node& n, const std::map<std::string, const Node*>& values);
 // to_ginac of resolve_definitions(d, n) with the derivation's symbol table.
 GiNaC::ex resolved_ginac(const Derivation& d, const Node& n);
 

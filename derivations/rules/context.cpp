@@ -247,4 +247,46 @@ void apply_to(Eq& q, const Substitutions& subs, const std::vector<std::string>& 
     if (used[i]) q.also.push_back(labels[i]);
 }
 
+// --- names that are functions of t ---------------------------------------------------
+
+ThroughT names_through(const StepContext& c, const ex& t) {
+  ThroughT out;
+  auto note = [&](const std::string& name, const char* how, const std::string& label) {
+    out.evidence += std::string(out.evidence.empty() ? "" : "; ") + name + " is a function of " + c.text(t) + " by its " +
+                    how + " " + label;
+  };
+  for (const auto& a : c.rule().refs) {
+    if (a.kind != RuleArg::Kind::Label) continue;
+    const Step& r = c.ref_step(a);
+    const Relation& rel = claim_of(r);
+    if (rel.sides.size() != 2) continue;
+    if (r.rule.name == "definition" && introduces_name(r)) {
+      if (c.conv(rel.sides[1]).has(t)) note(to_text(rel.sides[0]), "definition", r.label);
+      continue;
+    }
+    if (r.rule.name != "given" || rel.sides[0].kind != NodeKind::Symbol) continue;
+    const std::string& name = rel.sides[0].text;
+    const SymbolInfo* info = c.d.symbols.find(name);
+    if (!info || info->is_function || out.given_values.count(name)) continue;
+    const ex value = c.conv(rel.sides[1]);
+    if (!value.has(t) || value.has(info->sym) || info->sym.is_equal(t)) continue;
+    out.given_values.emplace(name, resolve_definitions(c.d, rel.sides[1]));
+    note(name, "given", r.label);
+  }
+  return out;
+}
+
+Node ThroughT::resolve(const Node& n) const {
+  if (given_values.empty()) return n;
+  std::map<std::string, const Node*> values;
+  for (const auto& [name, value] : given_values) values[name] = &value;
+  return substitute_names(n, values);
+}
+
+std::vector<ex> ThroughT::sides(const StepContext& c, const Relation& claim) const {
+  std::vector<ex> out;
+  for (const auto& n : claim.sides) out.push_back(c.conv(resolve(resolve_definitions(c.d, n))));
+  return out;
+}
+
 }  // namespace dc::rules

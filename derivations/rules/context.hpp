@@ -100,6 +100,20 @@ struct StepContext {
   bool real_domain(const ex& s) const;
 };
 
+// Names that are functions of t by a cited step: a `definition` whose value contains t
+// (resolved everywhere already), or a `given` `q = expr` with q a plain symbol and t in expr.
+// The given's q is then expr at every t, in the claim of this step: `sides` gives the claim
+// with it replaced (a reference that only mentions q at one value, y = F0*t, says nothing
+// about an integral of F0*t, which does not mention y). `evidence`: "p is a function of t by
+// its definition s1; ...".
+struct ThroughT {
+  std::map<std::string, Node> given_values;
+  std::string evidence;
+  std::vector<ex> sides(const StepContext& c, const Relation& claim) const;
+  Node resolve(const Node& n) const;
+};
+ThroughT names_through(const StepContext& c, const ex& t);
+
 // A step's claim as checked: the corrected form when the step declares an erratum.
 const Relation& claim_of(const Step& st);
 

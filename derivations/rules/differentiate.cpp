@@ -1,7 +1,10 @@
 // `by differentiate A, ... wrt t`: the claim follows from the references and their derivatives
-// in t. Without references the claim's own diff(...) is carried out and each link must hold. Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may
-// be differentiated; an equation between plain symbols (y = F0*t, y a symbol) is one value,
-// and differentiating it would "derive" 0 = F0. Such equations are used as they are.
+// in t. Without references the claim's own diff(...) is carried out and each link must hold.
+// Only equations that contain a function of t (x(t) = a*t^2/2) hold for every t and may be
+// differentiated; differentiating y = F0*t with y a plain symbol would "derive" 0 = F0. A
+// plain symbol that a cited definition or given `y = expr` expresses through t is instead a
+// function of t in the claim: its value there is expr (names_through, context.hpp), so
+// `diff(y, t) = F0` holds and `0 = F0` is still refuted.
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/follows.hpp"
 
@@ -40,22 +43,16 @@ Verdict differentiate(StepContext& c, const Relation& claim) {
       originals.push_back(q);
       if (has_application_at(q.e, t)) eqs.push_back({q.e.diff(ts), ex(), q.from});
     }
-  // A name defined through t (`p = (m0 + k*t)*u  by definition`, `H(t) = ...`) is a function
-  // of t: every use of it in the claim is its definition, so the claim's own derivative
-  // carries the reference (its equation is an identity once the name is resolved).
-  std::string through_t;
-  for (const auto& a : rule.refs) {
-    if (a.kind != RuleArg::Kind::Label) continue;
-    const Step& r = c.ref_step(a);
-    if (r.rule.name == "definition" && introduces_name(r) && c.conv(r.claim.sides[1]).has(t))
-      through_t += std::string(through_t.empty() ? "" : "; ") + to_text(r.claim.sides[0]) + " is a function of " +
-                   c.text(t) + " by its definition " + r.label;
-  }
-  if (eqs.empty() && !through_t.empty()) {
-    std::vector<ex> sd = c.sides(claim);
+  // A name that is a function of t by a cited definition (`p = (m0 + k*t)*u  by definition`,
+  // `H(t) = ...`) or given (`q = (m0 + k*t)*u  by given`, q a plain symbol): every use of it
+  // in the claim is its value at t, so the claim's own derivative carries the reference (its
+  // equation is an identity once the name is resolved).
+  const ThroughT through_t = names_through(c, t);
+  if (eqs.empty() && !through_t.evidence.empty()) {
+    std::vector<ex> sd = through_t.sides(c, claim);
     if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by differentiate' must be an equation");
     Verdict v = links_follow(c, sd, originals, "differentiate");
-    v.detail += (v.detail.empty() ? "" : "; ") + through_t;
+    v.detail += (v.detail.empty() ? "" : "; ") + through_t.evidence;
     return v;
   }
   if (eqs.empty()) {
@@ -73,9 +70,11 @@ Verdict differentiate(StepContext& c, const Relation& claim) {
   }
   c.res.derived = derived;
   eqs.insert(eqs.end(), originals.begin(), originals.end());
-  std::vector<ex> sd = c.sides(claim);
+  std::vector<ex> sd = through_t.sides(c, claim);
   if (sd.size() < 2) c.fail(c.s.claim_pos, "the claim of 'by differentiate' must be an equation");
-  return links_follow(c, sd, eqs, "differentiate");
+  Verdict v = links_follow(c, sd, eqs, "differentiate");
+  if (!through_t.given_values.empty()) v.detail += (v.detail.empty() ? "" : "; ") + through_t.evidence;
+  return v;
 }
 
 }  // namespace dc::rules
