@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <sstream>
 
 #include "derivations/symbolic/inspect.hpp"
+#include "derivations/symbolic/printer.hpp"
 #include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball.hpp"
 
@@ -107,6 +110,39 @@ Substituted substitute_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& p
     // an exact division by zero while substituting: an isolated point, not a counterexample
   }
   return s;
+}
+
+// The values the abstract applications of lhs and rhs took at the point (drawn from the seed,
+// as in substitute_point): "theta(t) = 0.41, diff(theta(t), t) = -1.2", so a reader sees the
+// function values that make the sides differ. At most six, ordered by their text.
+std::string function_values(const ex& lhs, const ex& rhs, const GiNaC::exmap& p, std::uint64_t fseed,
+                            const SymbolTable& ctx) {
+  std::map<std::string, ex> apps;
+  std::function<void(const ex&)> collect = [&](const ex& e) {
+    if (detail::is_abstract_application(e)) {
+      apps.emplace(print_text(e, ctx), e);
+      return;
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i));
+  };
+  collect(lhs);
+  collect(rhs);
+  std::string out;
+  int shown = 0;
+  for (const auto& [text, app] : apps) {
+    if (shown == 6) {
+      out += ", ...";
+      break;
+    }
+    try {
+      const ex value = detail::replace_abstract(app.subs(p, GiNaC::subs_options::no_pattern), fseed).evalf();
+      if (!GiNaC::is_a<numeric>(value)) continue;
+      out += (out.empty() ? "" : ", ") + text + " = " + print_number(value, 6);
+      ++shown;
+    } catch (const std::exception&) {
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -247,7 +283,11 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     std::string where = v.point.empty() ? std::string("an abstract-function sample") : detail::join_point(v.point);
     v.detail = "differs at " + where + ": " + difference_text(c) + " (certified by ball arithmetic at " +
                std::to_string(c.digits) + " digits)";
-    if (abstract) v.detail += " (abstract function values drawn at random)";
+    if (abstract) {
+      const std::string values = function_values(lhs, rhs, p, fseed, ctx);
+      v.detail += values.empty() ? " (abstract function values drawn at random)"
+                                 : " (abstract function values drawn at random: " + values + ")";
+    }
     return true;
   };
   // A refutation at extreme magnitudes (m = 1e-10, where both sides agree to fourteen digits)
