@@ -6,6 +6,7 @@
 
 #include "derivations/syntax/io.hpp"
 #include "derivations/calculus/big_o.hpp"
+#include "derivations/claims/internal/bank_units.hpp"
 #include "derivations/claims/internal/claim_steps.hpp"
 #include "derivations/report/report.hpp"
 #include "derivations/decide/satisfiable.hpp"
@@ -291,6 +292,9 @@ class ClaimLine {
   ClaimLine(const nlohmann::json& j, int line_no, const std::string& file, const ProveOptions& opt)
       : j_(j), line_(line_no), file_(file), opt_(opt) {}
 
+  // The dimensional evidence of the line's "units" (bank_units.hpp), once run() has read it.
+  const std::optional<std::string>& dimensions() const { return dimensions_; }
+
   Verdict run(const std::string& kind) {
     std::vector<std::string> fields{"lhs", "rhs"};
     if (kind == "limit" || kind == "antiderivative" || kind == "series_first_order" || kind == "series" ||
@@ -321,6 +325,16 @@ class ClaimLine {
       }
     };
     table_ = table_of(exprs, {});
+    try {
+      const claims::BankUnits units = claims::read_units(j_);
+      if (kind == "antiderivative")
+        dimensions_ = claims::dimension_evidence(units, table_, nodes.at("rhs"), "rhs", nodes.at("lhs"),
+                                                 "lhs times " + to_text(nodes.at("var")), &nodes.at("var"));
+      else if (kind != "solves_ode" && rhs_word_.empty())
+        dimensions_ = claims::dimension_evidence(units, table_, nodes.at("lhs"), "lhs", nodes.at("rhs"), "rhs");
+    } catch (const std::invalid_argument& e) {
+      throw LineError{e.what()};
+    }
     auto conv = [&](const std::string& f) -> ex {
       try {
         return to_ginac(nodes.at(f), table_);
@@ -414,6 +428,7 @@ class ClaimLine {
   }
 
  private:
+  std::optional<std::string> dimensions_;
   const nlohmann::json& j_;
   int line_;
   std::string file_;
@@ -667,9 +682,16 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
     return error("unknown kind '" + kind + "'; expected one of equal, limit, series, antiderivative, series_first_order, solves_ode");
   out["kind"] = kind;
   Verdict v;
+  std::optional<std::string> dimensions;
   try {
     ClaimLine c(j, line_no, file, opt);
-    v = c.run(kind);
+    try {
+      v = c.run(kind);
+    } catch (...) {
+      dimensions = c.dimensions();
+      throw;
+    }
+    dimensions = c.dimensions();
   } catch (const LineError& e) {
     return error(e.message);
   } catch (const InputError& e) {
@@ -689,8 +711,11 @@ nlohmann::ordered_json check_claim_line(const std::string& line, int line_no, co
     v.method = "internal";
     v.reason = std::string("a symbolic computation failed: ") + e.what();
   }
+  // a dimension mismatch is the first evidence (the verdict stays the rule's)
+  if (dimensions) v.detail = *dimensions + (v.detail.empty() ? "" : "; " + v.detail);
   nlohmann::ordered_json vj = verdict_json(v);
   for (auto& [k, val] : vj.items()) out[k] = val;
+  if (dimensions) out["dimensions"] = *dimensions;
   out["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }

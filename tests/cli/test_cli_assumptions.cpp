@@ -133,3 +133,38 @@ TEST_CASE("a refutation reports a point of ordinary size when one refutes", "[cl
     CHECK((x == 0 || (std::abs(x) >= 1e-2 && std::abs(x) <= 1e2)));
   }
 }
+
+TEST_CASE("claims: units on a line make a dimension mismatch the first evidence", "[cli][claims][units]") {
+  std::string file = "derivcheck_cli_units_" + std::to_string(::getpid()) + ".jsonl";
+  {
+    std::ofstream f(file);
+    // a student's answer with a stray h: m/s against m^2/s
+    f << R"J({"id":"wrong","kind":"equal","lhs":"v","rhs":"sqrt(2*g*h)*h","assume":"g > 0, h > 0","units":{"v":"m/s","g":"m/s^2","h":"m"}})J" << "\n";
+    f << R"J({"id":"right","kind":"equal","lhs":"sqrt(2*g*h)^2","rhs":"2*g*h","assume":"g > 0, h > 0","units":{"g":"m/s^2","h":"m"}})J" << "\n";
+    f << R"J({"id":"partial","kind":"equal","lhs":"v","rhs":"2*v","units":{"g":"m/s^2"}})J" << "\n";
+    f << R"J({"id":"anti","kind":"antiderivative","lhs":"F0*t","rhs":"F0*t^2/2","var":"t","units":{"F0":"N/s","t":"s"}})J" << "\n";
+    f << R"J({"id":"anti_wrong","kind":"antiderivative","lhs":"F0*t","rhs":"F0*t","var":"t","units":{"F0":"N/s","t":"s"}})J" << "\n";
+    f << R"J({"id":"bad_unit","kind":"equal","lhs":"v","rhs":"v","units":{"v":"furlong"}})J" << "\n";
+    f << R"J({"id":"no_units","kind":"equal","lhs":"v","rhs":"2*v"})J" << "\n";
+  }
+  Run r = run({"claims", file, "--no-timings"});
+  std::remove(file.c_str());
+  CAPTURE(r.out, r.err);
+  const auto lines = lines_of(r.out);
+  REQUIRE(lines.size() == 7);
+  std::vector<nlohmann::json> j;
+  for (const auto& l : lines) j.push_back(nlohmann::json::parse(l));
+  CHECK(j[0]["verdict"] == "refuted");
+  CHECK(j[0]["dimensions"] == "dimensions differ: lhs is m/s, rhs is m²/s");
+  CHECK(j[0]["detail"].get<std::string>().rfind("dimensions differ", 0) == 0);
+  CHECK(j[1]["verdict"] == "proved");
+  CHECK_FALSE(j[1].contains("dimensions"));
+  CHECK(j[2]["dimensions"] == "dimensions not checked: no unit for v");
+  CHECK(j[3]["verdict"] == "proved");
+  CHECK_FALSE(j[3].contains("dimensions"));
+  CHECK(j[4]["verdict"] == "refuted");
+  CHECK(j[4]["dimensions"].get<std::string>().find("dimensions differ: rhs is") == 0);
+  CHECK(j[5]["verdict"] == "error");
+  CHECK(j[5]["error"].get<std::string>().find("unit of 'v'") != std::string::npos);
+  CHECK_FALSE(j[6].contains("dimensions"));
+}
