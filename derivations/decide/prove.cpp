@@ -767,13 +767,19 @@ std::vector<SideCondition> side_conditions_of_tree_parts(const Node& n, const Sy
   walk = [&](const Node& m) {
     const bool binds = m.kind == NodeKind::Call &&
                        ((m.text == "limit" && m.args.size() == 3) ||
-                        (m.text == "integral" && (m.args.size() == 4 || m.args.size() == 2))) &&
+                        (m.text == "integral" && (m.args.size() == 4 || m.args.size() == 2)) ||
+                        (m.text == "eval_between" && m.args.size() == 4)) &&
                        m.args[1].kind == NodeKind::Symbol;
     if (binds) {
       for (std::size_t i = 2; i < m.args.size(); ++i) {
         const Node& a = m.args[i].kind == NodeKind::Neg ? m.args[i].args[0] : m.args[i];
         if (!(a.kind == NodeKind::Symbol && a.text == "oo")) walk(m.args[i]);
       }
+      // [F]_a^b is F(b) - F(a): what F needs at the ends is a condition of the claim
+      if (m.text == "eval_between") try {
+          parts.append(to_ginac(m, ctx));
+        } catch (const std::exception&) {
+        }
       return free_parts(m.args[0], m.args[1].text);
     }
     for (const auto& a : m.args) walk(a);

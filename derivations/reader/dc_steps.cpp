@@ -366,6 +366,8 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
   else if (r == "differentiate") allowed = {"wrt"};
   else if (r == "integrate") allowed = {"wrt", "from", "with"};
   else if (r == "solves_ode") allowed = {"wrt", "with"};
+  else if (r == "stationary" || r == "maximum" || r == "minimum") allowed = {"of", "wrt"};
+  else if (r == "instance") allowed = {"of", "with"};
   for (const auto& g : groups)
     if (!g.kw.empty() && !contains(allowed, g.kw))
       fail(g.kw_pos, "unexpected '" + g.kw + "' in 'by " + name + "'" + usage(r), static_cast<int>(g.kw.size()));
@@ -458,6 +460,29 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
       }
     }
     spec.into = labels(s, require("of"), "the label of the step to expand", 1);
+  } else if (r == "stationary" || r == "maximum" || r == "minimum") {
+    // `of A` (a step: its last side) or `of EXPR`; `wrt x` may be left out when the claim is `x = p`
+    if (!pre_items.empty()) fail(s.at(pre_items[0].first), "expected 'of' before the quantity" + usage(r));
+    const Group& g = require("of");
+    auto oit = items(s, g);
+    if (oit.size() != 1) fail(s.at(nonspace(s, g.b)), "expected one step label or expression after 'of'" + usage(r));
+    if (plain_identifier(s, oit[0].first, oit[0].second) &&
+        defined_.count(s.text.substr(oit[0].first, oit[0].second - oit[0].first)))
+      spec.into.push_back(label_arg(s, oit[0].first, oit[0].second));
+    else
+      spec.into.push_back(value_arg(s, oit[0].first, oit[0].second));
+    if (const Group* w = group("wrt")) {
+      auto wit = items(s, *w);
+      if (wit.size() != 1) fail(s.at(nonspace(s, w->b)), "expected one variable after 'wrt'" + usage(r));
+      spec.var = symbol_arg(s, wit[0].first, wit[0].second);
+    }
+  } else if (r == "instance") {
+    // `by instance of LAW [with x = value, ...]` (or `by instance LAW ...`)
+    const Group* g = group("of");
+    if (g && !pre_items.empty()) fail(s.at(pre_items[0].first), "expected only 'of LAW'" + usage(r));
+    if (g) spec.into = labels(s, *g, "the label of the law", 1);
+    else if (pre_items.size() == 1) spec.into.push_back(label_arg(s, pre_items[0].first, pre_items[0].second));
+    else fail(s.at(nonspace(s, pre.b)), "expected the label of the law after 'of'" + usage(r));
   } else if (r == "differentiate" || r == "integrate" || r == "solves_ode") {
     // differentiate and integrate may work on the claim's own diff(...) / integral(...)
     if (pre_items.empty() && r == "solves_ode")
@@ -507,7 +532,11 @@ std::string DcReader::usage(const std::string& r) {
       {"differentiate", "by differentiate [A, ...] wrt t"},
       {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]' or 'by integrate [A, ...] wrt x' for a claim "
                     "'integral(f, x, a, b) = G"},
-      {"solves_ode", "by solves_ode A wrt t [with y(T0) = value, ...]"}};
+      {"solves_ode", "by solves_ode A wrt t [with y(T0) = value, ...]"},
+      {"stationary", "by stationary of A wrt x' (A a step or an expression) with the claim 'x = point"},
+      {"maximum", "by maximum of A wrt x' (A a step or an expression) with the claim 'x = point"},
+      {"minimum", "by minimum of A wrt x' (A a step or an expression) with the claim 'x = point"},
+      {"instance", "by instance of LAW [with x = value, ...]"}};
   auto it = u.find(r);
   return it == u.end() ? "" : "; usage: '" + it->second + "'";
 }

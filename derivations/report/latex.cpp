@@ -320,6 +320,8 @@ class Writer {
       bool need = g.kind == NodeKind::Add || g.kind == NodeKind::Sub || g.kind == NodeKind::Neg;
       return "\\int " + operand(g, need) + " \\, \\mathrm{d} " + top(n.args[1]);
     }
+    if (f == "eval_between" && n.args.size() == 4)   // the evaluation bar [F]_a^b
+      return "\\left[" + top(n.args[0]) + "\\right]_{" + top(n.args[2]) + "}^{" + top(n.args[3]) + "}";
     if (is_builtin_function(f)) return "\\operatorname{" + f + "}\\left(" + args(n) + "\\right)";
     if (bare_function(n)) return symbol(f);
     return symbol(f) + "(" + args(n) + ")";

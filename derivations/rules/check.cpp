@@ -76,7 +76,8 @@ void check_erratum(const Derivation& d, const Step& s, const ProveOptions& opt, 
 }
 
 bool has_calculus(const Node& n) {
-  if (n.kind == NodeKind::Call && (n.text == "integral" || n.text == "diff" || n.text == "limit" || n.text == "O"))
+  if (n.kind == NodeKind::Call && (n.text == "integral" || n.text == "diff" || n.text == "limit" || n.text == "O" ||
+                                    n.text == "eval_between"))
     return true;
   for (const auto& a : n.args)
     if (has_calculus(a)) return true;

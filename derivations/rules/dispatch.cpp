@@ -24,6 +24,10 @@ constexpr std::pair<const char*, Rule> kRules[] = {
     {"differentiate", differentiate},
     {"integrate", integrate},
     {"solves_ode", solves_ode},
+    {"stationary", stationary},
+    {"maximum", stationary},
+    {"minimum", stationary},
+    {"instance", instance},
 };
 
 Verdict dispatch(StepContext& c, const Relation& claim) {

@@ -20,6 +20,8 @@ Verdict first_order(StepContext& c, const Relation& claim);      // limit_series
 Verdict differentiate(StepContext& c, const Relation& claim);    // differentiate.cpp
 Verdict integrate(StepContext& c, const Relation& claim);        // integrate.cpp
 Verdict solves_ode(StepContext& c, const Relation& claim);       // solves_ode.cpp
+Verdict stationary(StepContext& c, const Relation& claim);       // stationary.cpp (also maximum, minimum)
+Verdict instance(StepContext& c, const Relation& claim);         // instance.cpp
 
 // Run the step's rule on `claim` (its claim, or the printed claim of an erratum). Whatever
 // stops the rule becomes an undecided verdict with the reason, and an error in res when the

@@ -255,6 +255,44 @@ class Converter {
     throw UndecidedLimit("'" + short_text(n) + "' inside an expression was not evaluated: " + d.why, n.pos);
   }
 
+  // eval_between(F, x, a, b), the evaluation bar [F]_a^b: F(b) - F(a). x is bound (F is read
+  // with x a fresh real symbol, as an integrand is, so nothing declared of the quantity x
+  // simplifies F); an end may contain the quantity x (`eval_between(F, t, 0, t)`). An end oo or
+  // -oo is the limit of F there (calculus/limit_entry through the hook); a limit that does not
+  // exist, is infinite or is not decided leaves the claim undecided with the reason.
+  GiNaC::ex eval_between(const Node& n) {
+    check_count(n, 4, 4, "4 arguments: eval_between(F, x, a, b), the bar [F] from x = a to x = b");
+    const SymbolInfo& x = variable_arg(n, n.args[1], table_);
+    const SymbolTable bound = table_.with_bound_variable(x.name);
+    const GiNaC::ex xb = bound.find(x.name)->sym;
+    const GiNaC::ex F = Converter(bound).conv(n.args[0]);
+    auto at = [&](const Node& e) -> GiNaC::ex {
+      const int inf = infinity_sign(e);
+      if (inf == 0) {
+        const GiNaC::ex v = conv(e);
+        return guarded(n, [&] { return F.subs(GiNaC::exmap{{xb, v}}); }, &e.pos);
+      }
+      const std::string what = "'" + short_text(n) + "' at " + x.name + " = " + (inf > 0 ? "oo" : "-oo");
+      if (!calculus_hooks().limit)
+        throw UndecidedLimit(what + ": no limit method is installed (dc::calculus::install())", n.pos);
+      LimitResult r;
+      try {
+        r = calculus_hooks().limit(F, GiNaC::ex_to<GiNaC::symbol>(xb), 0, inf, bound);
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception&) {
+        throw UndecidedLimit(what + ": the limit helper could not evaluate it", n.pos);
+      }
+      if (!r.ok)
+        throw UndecidedLimit(what + ": " + (r.reason.empty() ? "the limit is undecided" : r.reason), n.pos);
+      if (r.infinite != 0)
+        throw UndecidedLimit(what + ": the limit is " + (r.infinite > 0 ? "+" : "-") + "infinity, not a value", n.pos);
+      return r.value;
+    };
+    const GiNaC::ex hi = at(n.args[3]), lo = at(n.args[2]);
+    return guarded(n, [&] { return hi - lo; });
+  }
+
   // d/dx of integral(f, t, a, b) = f(b) db/dx - f(a) da/dx (Leibniz's rule) when f does not
   // contain x and is continuous in t on the whole line; nullopt otherwise (then the integral
   // must have a value of its own, and that is differentiated).
@@ -436,6 +474,7 @@ class Converter {
                              n.pos);
       return r.value;
     }
+    if (f == "eval_between") return eval_between(n);
     if (f == "integral" && n.args.size() == 2) {
       variable_arg(n, n.args[1], table_);
       (void)conv(n.args[0]);
@@ -629,6 +668,14 @@ class Dimensioner {
       check_count(n, 3, 3, "3 arguments: limit(f, x, point)");
       const SymbolInfo& x = variable_arg(n, n.args[1], table_);
       require_same(n.args[2], x.has_dimension ? x.dimension : Dimension(), "the limit point of " + x.name);
+      return dim(n.args[0]);
+    }
+    if (f == "eval_between") {
+      check_count(n, 4, 4, "4 arguments: eval_between(F, x, a, b), the bar [F] from x = a to x = b");
+      const SymbolInfo& x = variable_arg(n, n.args[1], table_);
+      const Dimension xd = x.has_dimension ? x.dimension : Dimension();
+      require_same(n.args[2], xd, "the lower end of eval_between over " + x.name);
+      require_same(n.args[3], xd, "the upper end of eval_between over " + x.name);
       return dim(n.args[0]);
     }
     if (f == "integral") {

@@ -533,8 +533,9 @@ void emit(const Node& n, std::string& out) {
   if (n.parenthesized) out += ')';
 }
 
-constexpr std::array<std::string_view, 14> kBuiltins = {"sqrt", "exp",  "log",  "ln",   "sin",  "cos",  "tan",
-                                                        "asin", "acos", "atan", "abs",  "diff", "limit", "integral"};
+constexpr std::array<std::string_view, 15> kBuiltins = {"sqrt", "exp",  "log",  "ln",   "sin",  "cos",  "tan",
+                                                        "asin", "acos", "atan", "abs",  "diff", "limit", "integral",
+                                                        "eval_between"};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "derivations/reader/derivation.hpp"
+#include "derivations/report/latex.hpp"
 #include "derivations/report/report.hpp"
 #include "derivations/rules/check.hpp"
 
@@ -21,7 +22,8 @@ bool starts_with(const std::string& s, const std::string& p) { return s.rfind(p,
 TEST_CASE("every rule accepts its true steps and refutes its false ones", "[rules]") {
   std::string file = GENERATE(as<std::string>{}, "rewrite", "substitute", "solve", "solve_roots", "limit", "limit_forms", "series", "series_order",
                               "first_order", "differentiate", "integrate", "solves_ode", "definition", "bound_variables", "functions_at_points", "named_results",
-                              "chain_names", "solve_free", "defined_through_t");
+                              "chain_names", "solve_free", "defined_through_t", "stationary", "instance",
+                              "eval_between");
   CAPTURE(file);
   dc::Derivation d = dc::load_derivation(data("rules/" + file + ".dc"));
   dc::CheckSummary sum = dc::check_derivation(d);
@@ -183,4 +185,71 @@ TEST_CASE("a wrong printed claim with an erratum is reported with its refutation
   CHECK(r.verdict.holds());
   REQUIRE(!r.errors.empty());
   CHECK(r.errors[0].message().find("printed claim is wrong") != std::string::npos);
+}
+
+namespace {
+
+const dc::StepResult& result_of(const dc::Derivation& d, const dc::CheckSummary& sum, const std::string& label) {
+  for (std::size_t i = 0; i < d.steps.size(); ++i)
+    if (d.steps[i].label == label) return sum.results[i];
+  FAIL("no step " << label);
+  return sum.results[0];
+}
+
+}  // namespace
+
+TEST_CASE("stationary points, instances and evaluation bars give their evidence", "[rules][stationary][instance]") {
+  dc::Derivation d = dc::load_derivation(data("rules/stationary.dc"));
+  dc::CheckSummary sum = dc::check_derivation(d);
+  // a maximum: the derivative vanishes and the second derivative's sign is named
+  const dc::Verdict& max = result_of(d, sum, "ok_range_max").verdict;
+  CHECK(max.detail.find("second derivative at theta = pi/4 is -4*v0^2/g < 0") != std::string::npos);
+  // a maximum called a minimum: refuted at a point with the second derivative's value
+  const dc::Verdict& min = result_of(d, sum, "bad_range_min").verdict;
+  CHECK(min.kind == dc::VerdictKind::Refuted);
+  CHECK(!min.point.empty());
+  CHECK(min.lhs_label.find("second derivative") != std::string::npos);
+  CHECK(min.lhs_value.rfind("-", 0) == 0);
+  CHECK(min.rhs_value == "positive");
+  // a slope that does not vanish: its value at a certified point
+  const dc::Verdict& slope = result_of(d, sum, "bad_range_slope").verdict;
+  CHECK(slope.kind == dc::VerdictKind::Refuted);
+  CHECK(slope.lhs_label == "derivative (at theta = pi/3)");
+  CHECK(slope.rhs_value == "0");
+  CHECK(result_of(d, sum, "bad_range_outside").verdict.detail.find("not in the declared domain") != std::string::npos);
+  CHECK(result_of(d, sum, "bad_inflection_max").verdict.detail.find("inflection") != std::string::npos);
+
+  dc::Derivation in = dc::load_derivation(data("rules/instance.dc"));
+  dc::CheckSummary isum = dc::check_derivation(in);
+  CHECK(result_of(in, isum, "ok_first").verdict.detail.find("with v -> v1, KE -> KE1 (m unchanged)") != std::string::npos);
+  CHECK(result_of(in, isum, "ok_exchanged").verdict.detail.find("sides exchanged") != std::string::npos);
+  const dc::Verdict& half = result_of(in, isum, "bad_half").verdict;
+  CHECK(half.detail.find("the closest renaming, v -> v1, KE -> KE1 (m unchanged), gives KE1 = m*v1^2/2") !=
+        std::string::npos);
+  CHECK(!half.point.empty());
+}
+
+TEST_CASE("what cannot be decided about extrema, instances and bars says why", "[rules][stationary][instance]") {
+  dc::Derivation d = dc::load_derivation(data("rules/undecided_forms.dc"));
+  dc::CheckSummary sum = dc::check_derivation(d);
+  const std::vector<std::pair<std::string, std::string>> want = {
+      {"und_sign", "a maximum needs a < 0"},
+      {"und_domain", "mu is declared real but the law's m is positive"},
+      {"und_constraint", "the instance needs 'assume v1 < c'"},
+      {"und_bar", "the limit does not exist"}};
+  for (const auto& [label, why] : want) {
+    const dc::StepResult& r = result_of(d, sum, label);
+    CAPTURE(label, r.verdict.reason, r.verdict.detail);
+    CHECK(r.errors.empty());
+    CHECK(r.verdict.kind == dc::VerdictKind::Undecided);
+    CHECK((r.verdict.reason + r.verdict.detail).find(why) != std::string::npos);
+  }
+}
+
+TEST_CASE("an evaluation bar prints as a bar with its ends", "[rules][latex]") {
+  dc::Derivation d = dc::load_derivation(data("rules/eval_between.dc"));
+  CHECK(dc::latex_expression(d.steps[0].claim.sides[0], d.symbols) == "\\left[\\frac{k x^{2}}{2}\\right]_{0}^{L}");
+  const dc::Step* decay = d.find("ok_decay");
+  REQUIRE(decay);
+  CHECK(dc::latex_expression(decay->claim.sides[0], d.symbols).find("\\right]_{0}^{\\infty}") != std::string::npos);
 }
