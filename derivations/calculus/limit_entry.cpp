@@ -221,8 +221,35 @@ int same_value(const ex& a, const ex& b, const SymbolTable& ctx) {
 
 }  // namespace
 
-LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& point, int at_infinity, int dir,
+namespace {
+LimitResult real_limit(const ex& f, const GiNaC::symbol& x_in, const ex& point, int at_infinity, int dir,
+                       const SymbolTable& ctx);
+}  // namespace
+
+// An integer variable: only n -> oo or -oo (a sequence). A limit of f over the reals is also
+// the sequence's; when f has none over the reals (sin(n*pi)), the sequence may still have one,
+// which is not decided.
+LimitResult compute_limit(const ex& f, const GiNaC::symbol& x, const ex& point, int at_infinity, int dir,
                           const SymbolTable& ctx) {
+  const SymbolInfo* info = ctx.find(x);
+  if (!info || !info->domain.integer) return real_limit(f, x, point, at_infinity, dir, ctx);
+  LimitResult res;
+  if (at_infinity == 0) {
+    res.reason = "'" + info->name + "' is an integer: it has limits only at oo or -oo (a sequence), not at a finite point";
+    return res;
+  }
+  res = real_limit(f, x, point, at_infinity, dir, ctx);
+  if (!res.ok) {
+    res.does_not_exist = false;
+    res.reason = "no limit over the real numbers (" + res.reason + "); whether the sequence in the integer " +
+                 info->name + " has one is not decided";
+  }
+  return res;
+}
+
+namespace {
+LimitResult real_limit(const ex& f, const GiNaC::symbol& x_in, const ex& point, int at_infinity, int dir,
+                       const SymbolTable& ctx) {
   LimitResult res;
   res.dir = at_infinity ? 0 : dir;
   const ex x = resolve_symbol(x_in, f);
@@ -333,6 +360,8 @@ LimitResult compute_limit(const ex& f, const GiNaC::symbol& x_in, const ex& poin
   }
   return res;
 }
+
+}  // namespace
 
 LimitResult compute_limit(const ex& f, const GiNaC::symbol& x, const ex& point, int at_infinity,
                           const SymbolTable& ctx) {

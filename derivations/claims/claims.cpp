@@ -126,6 +126,9 @@ std::vector<AssumptionItem> parse_assumptions(const std::string& text, const Sou
       bool zero = a.rhs.kind == NodeKind::Number && a.rhs.text == "0";
       if (a.lhs.kind == NodeKind::Symbol && zero && op != Constraint::Op::Ne && op != Constraint::Op::Le) {
         a.name = a.lhs.text;
+        if (is_reserved_name(a.name))
+          fail(b + lb, "'" + a.name + "' is a predefined constant, not a symbol: it has no domain to assume",
+               static_cast<int>(a.name.size()));
         a.domain = op == Constraint::Op::Gt ? Domain::positive()
                    : op == Constraint::Op::Ge ? Domain::nonnegative()
                                               : Domain::negative();
@@ -140,6 +143,9 @@ std::vector<AssumptionItem> parse_assumptions(const std::string& text, const Sou
     if (!ident_start(item[0])) fail(b, "expected a symbol name at the start of the assumption '" + item + "'");
     while (i < item.size() && ident_char(item[i])) ++i;
     a.name = item.substr(0, i);
+    if (is_reserved_name(a.name))
+      fail(b, "'" + a.name + "' is a predefined constant, not a symbol: it has no domain to assume",
+           static_cast<int>(a.name.size()));
     std::size_t db = i, de = item.size();
     trim(item, db, de);
     if (db >= de)
@@ -211,6 +217,18 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
 
 namespace {
 
+// `n integer, n > 0` (in either order): the integers of one and the sign or interval of the
+// other, `positive integer`. Returns false (nothing changed) when neither is plain `integer`.
+bool merge_integer(Domain& into, const Domain& other) {
+  const bool plain_into = into.kind == Domain::Kind::Real && into.integer;
+  const bool plain_other = other.kind == Domain::Kind::Real && other.integer;
+  if (!plain_into && !plain_other) return false;
+  Domain merged = plain_into ? other : into;
+  merged.integer = true;
+  into = merged;
+  return true;
+}
+
 std::map<std::string, DomainAt> domain_map(const std::vector<AssumptionItem>& items, const std::string& text) {
   std::map<std::string, DomainAt> out;
   for (const auto& it : items) {
@@ -218,6 +236,12 @@ std::map<std::string, DomainAt> domain_map(const std::vector<AssumptionItem>& it
     auto prev = out.find(it.name);
     if (prev != out.end()) {
       if (prev->second.domain.to_string() == it.domain.to_string()) continue;
+      if (merge_integer(prev->second.domain, it.domain)) {
+        if (prev->second.domain.empty())
+          throw InputError(it.pos, "the assumptions for '" + it.name + "' leave no integer: " +
+                                       prev->second.domain.to_string(), static_cast<int>(it.text.size()), text);
+        continue;
+      }
       throw InputError(it.pos,
                        "conflicting assumptions for '" + it.name + "': " + prev->second.domain.to_string() + " and " +
                            it.domain.to_string(),
@@ -557,6 +581,13 @@ class ClaimLine {
     for (const auto& it : items) {
       if (it.is_constraint) continue;
       auto prev = domains.find(it.name);
+      if (prev != domains.end() && prev->second.domain.to_string() != it.domain.to_string() &&
+          merge_integer(prev->second.domain, it.domain)) {
+        if (prev->second.domain.empty())
+          throw LineError{"in field 'assume' (column " + std::to_string(it.pos.col) + "): the assumptions for '" +
+                          it.name + "' leave no integer: " + prev->second.domain.to_string()};
+        continue;
+      }
       if (prev != domains.end() && prev->second.domain.to_string() != it.domain.to_string())
         throw LineError{"in field 'assume' (column " + std::to_string(it.pos.col) + "): conflicting assumptions for '" +
                         it.name + "': " + prev->second.domain.to_string() + " and " + it.domain.to_string()};

@@ -16,8 +16,8 @@ using GiNaC::ex;
 enum class Defined { Yes, No, Unknown };
 
 // Is the side, as written, real at p? (defined_at_point, with the side's value when it is)
-Defined defined_at(const WrittenSide& s, const GiNaC::exmap& p, std::string* value) {
-  const int d = defined_at_point(s.parts, p);
+Defined defined_at(const WrittenSide& s, const GiNaC::exmap& p, std::string* value, const SymbolTable& ctx) {
+  const int d = defined_at_point(s.parts, p, &ctx);
   if (d < 0) return Defined::No;
   if (d == 0) return Defined::Unknown;
   kernel::Ball b = kernel::enclose_sign_at(s.value, &p, 128, 1 << 12);
@@ -36,13 +36,13 @@ GiNaC::exmap point_of(const std::vector<std::pair<std::string, std::string>>& pt
 // Refute v at p when one side is defined there and another is not; true when it did.
 bool one_side_only(Verdict& v, const std::vector<WrittenSide>& sides, const GiNaC::exmap& p,
                    const std::vector<std::pair<std::string, std::string>>& described, const std::string& what,
-                   bool* all_undefined) {
+                   bool* all_undefined, const SymbolTable& ctx) {
   int yes = -1, no = -1;
   std::string value;
   bool every_no = true;
   for (std::size_t i = 0; i < sides.size(); ++i) {
     std::string val;
-    const Defined d = defined_at(sides[i], p, &val);
+    const Defined d = defined_at(sides[i], p, &val, ctx);
     every_no = every_no && d == Defined::No;
     if (d == Defined::Yes && yes < 0) yes = static_cast<int>(i), value = val;
     if (d == Defined::No && no < 0) no = static_cast<int>(i);
@@ -78,7 +78,7 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
   for (const SideCondition* sc : violated) {
     bool all_no = false;
     const std::string what = sc->what + " (" + sc->reason + ") " + sc->evidence;
-    if (one_side_only(v, sides, point_of(sc->point, ctx), sc->point, what, &all_no)) return;
+    if (one_side_only(v, sides, point_of(sc->point, ctx), sc->point, what, &all_no, ctx)) return;
     every_point_undefined = every_point_undefined && all_no;
   }
   // The conditions each side needs and the declarations do not guarantee.
@@ -124,7 +124,7 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
       const GiNaC::exmap p = sampler.draw(seek, attempt % 3 == 2 ? 1 : 0, &adm);
       if (!adm) continue;
       inhabited = true;
-      for (const WrittenSide& s : sides) inhabited = inhabited && defined_at(s, p, nullptr) == Defined::Yes;
+      for (const WrittenSide& s : sides) inhabited = inhabited && defined_at(s, p, nullptr, ctx) == Defined::Yes;
     }
     if (!inhabited) {
       v.kind = VerdictKind::Undecided;
@@ -146,7 +146,7 @@ void require_defined_on_common_domain(Verdict& v, const std::vector<WrittenSide>
     bool adm = false;
     const GiNaC::exmap p = sampler.draw(rng, attempt % 3 == 2 ? 1 : 0, &adm);
     if (!adm) continue;
-    if (one_side_only(v, sides, p, sampler.describe(p), "the sides need different conditions (" + conds + ")", nullptr))
+    if (one_side_only(v, sides, p, sampler.describe(p), "the sides need different conditions (" + conds + ")", nullptr, ctx))
       return;
   }
   v.kind = VerdictKind::Undecided;

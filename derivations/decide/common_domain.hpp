@@ -38,7 +38,8 @@ std::map<std::string, std::string> side_condition_keys(const GiNaC::ex& e, const
 // Is a side with these parts defined at p, as side conditions read it? -1: a condition of a
 // part is certainly violated there (or a part certainly has no real value); +1: every condition
 // certainly holds and every part has a certified real value; 0: not decided (prove.cpp).
-int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p);
+// `ctx` (optional) says which symbols are integers (x^n with n integer needs no positive x).
+int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p, const SymbolTable* ctx = nullptr);
 
 // For a verdict that holds and has a violated side condition (a point of the declared domain
 // where some side is certainly undefined):

@@ -18,6 +18,7 @@
 #include "derivations/kernel/probe.hpp"
 #include "derivations/kernel/sign.hpp"
 #include "derivations/decide/common_domain.hpp"
+#include "derivations/decide/integer.hpp"
 
 namespace dc {
 
@@ -235,8 +236,10 @@ struct RawCond {
   std::string reason;
 };
 
-void collect_conditions(const ex& e, std::vector<RawCond>& out) {
-  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out);
+// `ctx` (when given) says which symbols are integers: x^n for an integer n needs x != 0 only
+// where n may be negative, not x > 0.
+void collect_conditions(const ex& e, std::vector<RawCond>& out, const SymbolTable* ctx = nullptr) {
+  for (std::size_t i = 0; i < e.nops(); ++i) collect_conditions(e.op(i), out, ctx);
   if (GiNaC::is_a<GiNaC::power>(e)) {
     const ex& b = e.op(0);
     const ex& x = e.op(1);
@@ -253,6 +256,10 @@ void collect_conditions(const ex& e, std::vector<RawCond>& out) {
       std::string why = (n.denom() == 2) ? "sqrt argument" : "fractional power base";
       out.push_back({n.is_negative() ? CondKind::Positive : CondKind::Nonnegative, b,
                      n.is_negative() ? why + " (divisor)" : why});
+      return;
+    }
+    if (ctx && integer_valued(x, *ctx)) {
+      if (!detail::range_of(x, *ctx).nonnegative()) out.push_back({CondKind::Nonzero, b, "divisor"});
       return;
     }
     out.push_back({CondKind::Positive, b, "power base"});
@@ -391,7 +398,7 @@ std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ct
   bool negative_real = false;   // the counterexample uses a negative value of a real symbol
   for (const auto& [name, value] : refuted.point) {
     const SymbolInfo* info = ctx.find(name);
-    negative_real = negative_real || (info && !info->is_function && info->domain.kind == Domain::Kind::Real &&
+    negative_real = negative_real || (info && !info->is_function && info->domain.unrestricted() &&
                                       value.rfind('-', 0) == 0);
   }
   if (!negative_real) return "";
@@ -399,7 +406,7 @@ std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ct
   std::vector<std::string> names;
   for (const auto& s : detail::ordered_symbols(lhs - rhs, ctx)) {
     const SymbolInfo* info = ctx.find(GiNaC::ex_to<GiNaC::symbol>(s));
-    if (info && info->domain.kind == Domain::Kind::Real) names.push_back(info->name);
+    if (info && info->domain.unrestricted()) names.push_back(info->name);
   }
   SymbolTable narrowed = ctx;
   for (const auto& n : names) narrowed.narrow_domain(n, Domain::positive());
@@ -411,85 +418,8 @@ std::string declaration_hint(const ex& lhs, const ex& rhs, const SymbolTable& ct
 
 }  // namespace
 
-void require_defined_on_domain(Verdict& v) {
-  if (!v.holds()) return;
-  for (const SideCondition& sc : v.side_conditions) {
-    if (sc.status != SideCondition::Status::Violated) continue;
-    v.kind = VerdictKind::Refuted;
-    v.method += " + side condition";
-    v.points = 0;   // the agreeing points of the verdict it replaces are not evidence here
-    v.point = sc.point;
-    v.lhs_value.clear();
-    v.rhs_value.clear();
-    v.detail = "not defined on the whole declared domain: " + sc.what + " (" + sc.reason + ") " + sc.evidence +
-               "; restrict the declarations or add an assumption";
-    return;
-  }
-}
-
-void require_antiderivative_defined(Verdict& v, const GiNaC::ex& integrand, const std::string& var,
-                                    const SymbolTable& ctx) {
-  if (!v.holds()) return;
-  for (const SideCondition& sc : v.side_conditions) {
-    if (sc.status == SideCondition::Status::Guaranteed) continue;
-    if (sc.status == SideCondition::Status::Violated && !sc.point.empty()) {
-      // the claimed antiderivative is undefined at this point of the domain: if the integrand
-      // is defined there, the claim is false at that point
-      GiNaC::exmap at;
-      for (const auto& [name, value] : sc.point)
-        if (const SymbolInfo* info = ctx.find(name)) at[info->sym] = GiNaC::numeric(value.c_str());
-      DigitsGuard g(30);
-      const GiNaC::ex f = integrand.subs(at).evalf();
-      if (GiNaC::is_a<GiNaC::numeric>(f) && GiNaC::ex_to<GiNaC::numeric>(f).is_real()) {
-        v.kind = VerdictKind::Refuted;
-        v.method += " + side condition";
-        v.points = 0;
-        v.point = sc.point;
-        v.lhs_value = detail::format_number(GiNaC::ex_to<GiNaC::numeric>(f));
-        v.rhs_value = "undefined";
-        v.detail = "the claimed antiderivative is not defined at a point of the declared domain where the integrand is: " +
-                   sc.what + " (" + sc.reason + ") " + sc.evidence + "; restrict the declarations or use a form defined there";
-        return;
-      }
-    }
-    if (!names_symbol(sc.what, var)) continue;
-    v.kind = VerdictKind::Undecided;
-    v.reason = "the claimed antiderivative may be undefined or jump inside the domain of " + var + " (" + sc.what +
-               ", " + sc.reason + ", " +
-               (sc.status == SideCondition::Status::Violated
-                    ? (sc.evidence.rfind("fails", 0) == 0 ? sc.evidence : "fails " + sc.evidence)
-                    : "is not guaranteed by the declarations") +
-               "): its derivative matching the integrand proves it only where it is defined and continuous; "
-               "restrict the domain or add an assumption";
-    v.detail = v.reason;
-    return;
-  }
-}
-
-void require_solution_without_singularities(Verdict& v, const std::string& var) {
-  if (!v.holds()) return;
-  for (const SideCondition& sc : v.side_conditions) {
-    if (sc.status == SideCondition::Status::Guaranteed) continue;
-    // A condition on a declared function's values (log(mr(t)/m0) with mr declared positive,
-    // which the domains do not reach) is the author's: declared functions are taken to be
-    // smooth, as in the continuity test of integrals.
-    if (sc.evidence.find("abstract function") != std::string::npos) continue;
-    if (!names_symbol(sc.what, var)) continue;
-    v.kind = VerdictKind::Undecided;
-    v.reason = "the claimed solution may be singular inside the domain (" + sc.what + ", " + sc.reason + ", " +
-               (sc.status != SideCondition::Status::Violated ? std::string("is not guaranteed by the declarations")
-                : sc.evidence.rfind("fails", 0) == 0         ? sc.evidence
-                                                              : "fails " + sc.evidence) +
-               "): the residual and the initial values prove it only up to the "
-               "first singularity, and a closed form can jump there (atan(1/" + var + ") + atan(" + var +
-               ") has derivative 0 but is not constant); restrict the domain or add an assumption";
-    v.detail = v.reason;
-    return;
-  }
-}
-
 Verdict prove_equal(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
-  Verdict v = cascade(lhs, rhs, ctx, opt);
+  Verdict v = with_integer_periods(lhs, rhs, ctx, opt, cascade);
   if (v.kind == VerdictKind::Refuted && opt.numeric) {
     std::string hint = declaration_hint(lhs, rhs, ctx, opt, v);
     v.hint = hint;
@@ -591,7 +521,7 @@ bool constraint_implies(CondKind k, const ex& a, const Constraint& c, const Symb
 
 std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) {
   std::vector<RawCond> raw;
-  collect_conditions(e, raw);
+  collect_conditions(e, raw, &ctx);
   std::map<std::string, SideCondition> by_text;  // sorted, deduplicated: deterministic order
   for (const RawCond& rc : raw) {
     SideCondition sc;
@@ -693,9 +623,9 @@ std::vector<SideCondition> side_conditions(const ex& e, const SymbolTable& ctx) 
 
 // check_satisfiable lives in satisfiable.cpp.
 
-int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p) {
+int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p, const SymbolTable* ctx) {
   std::vector<RawCond> raw;
-  collect_conditions(parts, raw);
+  collect_conditions(parts, raw, ctx);
   bool all_hold = true;
   for (const RawCond& rc : raw) {
     const ex arg = rc.kind == CondKind::UnitInterval ? 1 - GiNaC::pow(rc.arg, 2) : rc.arg;
@@ -732,7 +662,7 @@ int defined_at_point(const GiNaC::lst& parts, const GiNaC::exmap& p) {
 
 std::map<std::string, std::string> side_condition_keys(const ex& e, const SymbolTable& ctx) {
   std::vector<RawCond> raw;
-  collect_conditions(e, raw);
+  collect_conditions(e, raw, &ctx);
   std::map<std::string, std::string> out;
   for (const RawCond& rc : raw) out.emplace(condition_text(rc.kind, rc.arg, ctx), condition_key(rc.kind, rc.arg));
   return out;

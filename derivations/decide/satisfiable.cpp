@@ -418,9 +418,14 @@ class Search {
     for (std::size_t i = 0; i < syms_.size(); ++i) {
       auto v = draw_from(feas_[i], rng_, s);
       if (!v) return false;
-      p[syms_[i]] = *v;
+      p[syms_[i]] = integer(i) ? nearest_integer(*v) : *v;
     }
     return true;
+  }
+
+  bool integer(std::size_t i) const { return detail::domain_of(syms_[i], ctx_).integer; }
+  static numeric nearest_integer(const numeric& v) {
+    return numeric(cln::floor1(cln::the<cln::cl_R>((v + numeric(1, 2)).to_cl_N())));
   }
 
   bool in_domain(std::size_t i, const numeric& v) const {
@@ -486,6 +491,7 @@ class Search {
       else
         off = random_magnitude(rng_, -kMaxExponent, kMaxExponent - 1);  // absolute
       numeric v = t + dir * off;
+      if (integer(i)) v = off.is_zero() ? nearest_integer(t) : dir > 0 ? nearest_integer(v) + 1 : nearest_integer(v) - 1;
       if (!in_domain(i, v)) continue;
       p[syms_[i]] = v;
       return true;

@@ -319,6 +319,17 @@ class BallEvaluator {
     if (sb == BallStatus::NotReal || sb == BallStatus::Pole) return sb;
     if (sx == BallStatus::NotReal || sx == BallStatus::Pole) return sx;
     if (sb != BallStatus::Value || sx != BallStatus::Value) return BallStatus::Unknown;
+    if (arb_is_exact(x.v) && arb_is_int(x.v)) {
+      // an exponent that is exactly an integer here ((-1)^n at an integer n): b^k is real
+      if (arf_sgn(arb_midref(x.v)) < 0 && arb_contains_zero(b.v))
+        return arb_is_zero(b.v) ? pole("division by zero") : unknown("a divisor not separated from 0");
+      fmpz_t k;
+      fmpz_init(k);
+      arf_get_fmpz(k, arb_midref(x.v), ARF_RND_DOWN);
+      arb_pow_fmpz(out, b.v, k, prec_);
+      fmpz_clear(k);
+      return finite(out);
+    }
     if (arb_is_positive(b.v)) {
       // b^x = exp(x log b), through exp_of so that huge exponents stay finite
       Tmp l;

@@ -267,7 +267,7 @@ Verdict probe_definite_integral(const ex& f, const GiNaC::symbol& x, const ex& a
       if (sym.is_equal(dummy)) continue;
       const Domain dom = detail::domain_of(sym, ctx);
       if (dom.kind == Domain::Kind::Real || dom.kind == Domain::Kind::Nonnegative) specials.push_back({sym, 0});
-      if (dom.kind == Domain::Kind::Interval) {
+      if (dom.kind == Domain::Kind::Interval && !dom.integer) {
         if (!dom.lo_open) specials.push_back({sym, dom.lo});
         if (!dom.hi_open) specials.push_back({sym, dom.hi});
       }

@@ -78,8 +78,55 @@ std::optional<LinearBound> linear_bound(const Constraint& c, const ex& s, const 
   return LinearBound{-*bv / *av, av->is_positive() ? c.op : flipped(c.op)};
 }
 
+namespace {
+
+numeric floor_of(const numeric& x) { return numeric(cln::floor1(cln::the<cln::cl_R>(x.to_cl_N()))); }
+
+// An integer of an integer domain: of every draw about half lie in [-12, 12] (where a claim
+// such as sin(n*pi/2) = 0 or cos(n*pi) = 1 fails at every odd n), the others at magnitudes
+// 10^[1, 2] (tier 0), 10^[1, 6] (tier 1) or 10^[1, 30] (tiers 2, 3); intervals: an integer
+// inside, near the lower end at tier 2 and the upper end at tier 3.
+numeric integer_sample(const Domain& d, Rng& rng, int tier) {
+  using K = Domain::Kind;
+  if (d.kind == K::Interval) {
+    DigitsGuard g(40);
+    ex l = d.lo.evalf(), h = d.hi.evalf();
+    numeric lo = floor_of(GiNaC::ex_to<numeric>(l)), hi = floor_of(GiNaC::ex_to<numeric>(h)) + 1;
+    for (int attempt = 0; attempt < 40; ++attempt) {
+      numeric width = hi - lo + 1;
+      numeric v;
+      const double u = rng.uniform();
+      if (tier == 2) v = lo + static_cast<long>(rng.below(3));
+      else if (tier == 3) v = hi - static_cast<long>(rng.below(3));
+      else if (width < numeric(1000000)) v = lo + static_cast<long>(rng.below(static_cast<std::uint64_t>(width.to_long())));
+      else v = lo + floor_of(numeric(u) * width);
+      if (d.contains(v)) return v;
+    }
+    for (numeric v = lo; v <= hi; v += 1)   // a narrow interval: its first integer
+      if (d.contains(v)) return v;
+    return lo;   // empty (declarations reject it): any integer
+  }
+  numeric mag;
+  if (rng.below(2) == 0) {
+    mag = static_cast<long>(rng.below(13));
+  } else {
+    const double decades = tier >= 2 ? 30.0 : tier == 1 ? 6.0 : 2.0;
+    const double x = std::pow(10.0, 1.0 + (decades - 1.0) * rng.uniform());
+    mag = x < 9e15 ? numeric(static_cast<long>(std::llround(x))) : floor_of(rational_near(x, x * 1e-6, rng));
+  }
+  switch (d.kind) {
+    case K::Positive: return mag.is_zero() ? numeric(1) : mag;
+    case K::Nonnegative: return mag;
+    case K::Negative: return mag.is_zero() ? numeric(-1) : -mag;
+    default: return rng.below(2) ? -mag : mag;
+  }
+}
+
+}  // namespace
+
 numeric sample_value(const Domain& d, Rng& rng, int tier) {
   using K = Domain::Kind;
+  if (d.integer) return integer_sample(d, rng, tier);
   const bool wide = tier > 0;
   if (d.kind != K::Interval) {
     double decades = tier >= 2 ? 30.0 : tier == 1 ? 6.0 : 2.0;
@@ -169,6 +216,7 @@ void move_to_boundary(const Constraint& c, const std::vector<ex>& syms, const st
     numeric off = rational_near(std::pow(10.0, e), std::pow(10.0, e) * 1e-3, rng);
     if (!t.is_zero()) off *= GiNaC::abs(t);
     numeric v = t + dir * off;
+    if (doms[i].integer) v = dir > 0 ? floor_of(t) + 1 : -floor_of(-t) - 1;   // the next integer inside
     if (!doms[i].contains(v)) continue;
     p[syms[i]] = v;
     return;
@@ -258,7 +306,9 @@ GiNaC::exmap draw_within(const std::vector<ex>& syms, const std::vector<Domain>&
     }
     std::optional<numeric> v;
     if (!(lo && hi && *lo >= *hi)) v = value_between(lo, hi, d, rng);
-    if (!v || v->is_integer() || !d.contains(*v)) v = sample_value(d, rng, 0);
+    // an integer symbol: the integer nearest to the value drawn, when the domain holds it
+    if (v && d.integer) v = floor_of(*v + numeric(1, 2));
+    if (!v || (v->is_integer() && !d.integer) || !d.contains(*v)) v = sample_value(d, rng, 0);
     p[syms[i]] = *v;
   }
   return p;

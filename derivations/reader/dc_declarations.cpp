@@ -53,6 +53,9 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
     }
   }
   for (const auto& n : names) {
+    if (n.name == "deg")
+      fail(n.pos, std::string("'deg' is predefined as pi/180 (degrees: 30*deg, or 30°) and cannot be declared as a ") + kind +
+                      "; choose another name", 3);
     if (is_reserved_name(n.name) || contains(kRuleKeywords, n.name) || n.name == "by")
       fail(n.pos, "'" + n.name + "' is a reserved name and cannot be declared as a " + kind,
            static_cast<int>(n.name.size()));
@@ -67,6 +70,12 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
   std::size_t db = p;
   std::size_t we;
   std::string dw = word_at(s.text, p, &we);
+  // "integer in [1, 10]": the interval follows the word integer
+  if (dw == "integer") {
+    std::size_t q = we, qe;
+    while (q < s.text.size() && is_space(s.text[q])) ++q;
+    if (word_at(s.text, q, &qe) == "in") dw = "in", we = qe;
+  }
   std::size_t de;
   if (dw == "in") {
     std::size_t q = we;
@@ -84,9 +93,13 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
     if (close == std::string::npos) fail(s.at(q), "expected ']' or ')' to close the interval");
     de = close + 1;
   } else if (dw.empty()) {
-    fail(s.at(p), "expected a domain: real, positive, nonnegative, negative, or an interval 'in [a, b]'");
+    fail(s.at(p), "expected a domain: real, positive, nonnegative, negative, integer, or an interval 'in [a, b]'");
   } else {
     de = we;
+    // "positive integer": a sign word and the word integer
+    std::size_t q = de, qe;
+    while (q < s.text.size() && is_space(s.text[q])) ++q;
+    if (dw != "integer" && word_at(s.text, q, &qe) == "integer") de = qe;
   }
   std::string dtext = s.text.substr(db, de - db);
   Domain domain = parse_domain(dtext, s.at(db));
@@ -125,6 +138,7 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
     info.domain = domain;
     info.dimension = dim;
     info.has_dimension = true;
+    if (unit_as_written(unit)) info.unit = to_text(unit);
     info.pos = names[i].pos;
     info.is_function = is_function;
     info.params = params;

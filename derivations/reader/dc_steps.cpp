@@ -243,7 +243,7 @@ bool DcReader::names_new_quantity(const Step& step) const {
   for (const auto& c : d_.symbols.constraints())
     if (c.lhs.has(info->sym) || c.rhs.has(info->sym)) return false;
   if (n.kind == NodeKind::Symbol) return !info->is_function;
-  if (info->domain.kind != Domain::Kind::Real) return false;
+  if (!info->domain.unrestricted()) return false;
   if (n.kind != NodeKind::Call || !info->is_function || n.args.size() != info->params.size()) return false;
   for (std::size_t i = 0; i < n.args.size(); ++i)
     if (n.args[i].kind != NodeKind::Symbol || n.args[i].text != info->params[i]) return false;

@@ -66,6 +66,7 @@ class Writer {
 
   std::string symbol(const std::string& name) {
     if (name == "pi") return "\\pi";
+    if (name == "deg") return "{}^{\\circ}";
     if (name == "oo") return "\\infty";
     if (const SymbolInfo* s = table_.find(name)) return s->tex.empty() ? default_tex_name(name) : s->tex;
     if (name == "undefined") return "\\text{undefined}";   // a limit that does not exist
@@ -105,6 +106,12 @@ class Writer {
       std::string s = operand(f, needs_group_as_factor(f, i == 0) || (!last && is_big_operator(f)));
       if (i == 0) {
         out = s;
+        continue;
+      }
+      // 30*deg (or 30°) is 30^{\circ}: the degree sign follows its factor directly
+      if (f.kind == NodeKind::Symbol && f.text == "deg" && !f.parenthesized) {
+        const Node& before = *fs[i - 1];
+        out += before.kind == NodeKind::Pow && !before.parenthesized ? "{}^{\\circ}" : "^{\\circ}";
         continue;
       }
       bool dot = !s.empty() && (std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-' || s[0] == '.');

@@ -8,6 +8,7 @@
 // by a small line with its label, rule and verdict, and its notes; hidden and stable steps are
 // shown there too.
 #include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "derivations/report/latex.hpp"
@@ -169,7 +170,10 @@ class DocumentWriter {
     std::vector<std::pair<std::string, std::vector<std::string>>> groups;   // unit -> TeX names
     for (const SymbolInfo& s : d.symbols.all()) {
       if (s.defined_by_step || !s.has_dimension) continue;
-      std::string unit = s.dimension.dimensionless() ? std::string() : siunitx_unit(s.dimension.to_ascii());
+      // the unit as the author wrote it ([N*s], [rad/s]) when it names units; otherwise the
+      // dimension in base units ([momentum] is kg.m/s)
+      std::string unit = !s.unit.empty() ? siunitx_unit(s.unit)
+                             : s.dimension.dimensionless() ? std::string() : siunitx_unit(s.dimension.to_ascii());
       auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& x) { return x.first == unit; });
       if (g == groups.end()) groups.push_back({unit, {}}), g = groups.end() - 1;
       std::string name = "$" + (s.tex.empty() ? default_tex_name(s.name) : s.tex) + "$";
@@ -194,7 +198,20 @@ class DocumentWriter {
     return out + ".\n\n";
   }
 
-  // "kg*m/s^2" (Dimension::to_ascii) in siunitx's literal form: kg.m/s^{2}; m^(1/2): m^{0.5}.
+  // An exponent "p/q" as siunitx prints it: a half as a decimal (3/2: 1.5, -1/2: -0.5),
+  // other fractions as written (1/3); an integer unchanged.
+  static std::string fraction_exponent(const std::string& e) {
+    const std::size_t slash = e.find('/');
+    if (slash == std::string::npos) return e;
+    if (e.substr(slash + 1) != "2") return e;
+    const std::string p = e.substr(0, slash);
+    const bool neg = !p.empty() && p[0] == '-';
+    const long whole = std::labs(std::stol(p)) / 2;   // p is odd: the fraction is reduced
+    return (neg ? "-" : "") + std::to_string(whole) + ".5";
+  }
+
+  // "kg*m/s^2" (Dimension::to_ascii, or the unit as written: "N*s", "m^(-1/2)") in siunitx's
+  // literal form: kg.m/s^{2}; m^(1/2): m^{0.5}.
   static std::string siunitx_unit(const std::string& ascii) {
     // the derived units a handout writes (energy and torque share J's dimension)
     if (ascii == "kg*m^2/s^2") return "J";
@@ -211,10 +228,7 @@ class DocumentWriter {
         std::string e;
         if (j < ascii.size() && ascii[j] == '(') {
           std::size_t close = ascii.find(')', j);
-          e = ascii.substr(j + 1, close - j - 1);
-          if (e == "1/2") e = "0.5";
-          else if (e == "-1/2") e = "-0.5";
-          else if (e.size() > 2 && e.substr(e.size() - 2) == "/2") e = std::to_string(std::stoi(e.substr(0, e.size() - 2))) + ".5";
+          e = fraction_exponent(ascii.substr(j + 1, close - j - 1));
           i = close;
         } else {
           while (j < ascii.size() && (std::isdigit(static_cast<unsigned char>(ascii[j])) || ascii[j] == '-')) e += ascii[j++];

@@ -2,7 +2,7 @@
 //   relation := expr ( '=' expr )*            ('&', '\\', aligned markers skipped)
 //   expr     := ['-'|'+'] term ( ('+'|'-') term )*
 //   term     := factor ( ['\cdot' | '/'] factor )*        juxtaposition is multiplication
-//   factor   := primary ( '^' '{' expr '}' )?
+//   factor   := primary ( '^' '{' expr '}' | '^{\circ}' )? | '{}^{\circ}'      (the degree sign: *deg)
 //   primary  := number | name | name '(' args ')' | '{' expr '}' | '\left(' expr '\right)'
 //             | '(' expr ')' | '\left|' expr '\right|' | \frac | \sqrt | \mathrm{e}^ | \ln ...
 //             | \lim_{x \to p} factor | \lim_{x \to p^{+}} factor | \int_{a}^{b} expr \, \mathrm{d} x | \pi | \infty
@@ -220,8 +220,11 @@ class LatexReader {
   }
 
   Node factor() {
+    // the degree sign: 30^{\circ} is 30*deg; {}^{\circ} stands alone after a power
+    if (accept("{}^{\\circ}")) return make(NodeKind::Symbol, "deg");
     Node base = primary();
     skip_ws();
+    if (accept("^{\\circ}")) return bin(NodeKind::Mul, std::move(base), make(NodeKind::Symbol, "deg"));
     if (peek() == '^') {
       ++i_;
       Node e = braced_expr();

@@ -175,7 +175,7 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   // `M = integral(...) = G` naming a quantity declared `positive`: G must be positive too
   if (s.names_result && claim.sides[0].kind == NodeKind::Symbol)
     if (const SymbolInfo* info = d.symbols.find(claim.sides[0].text);
-        info && info->domain.kind != Domain::Kind::Real && res.verdict.holds()) {
+        info && !info->domain.unrestricted() && res.verdict.holds()) {
       try {
         Verdict in = rules::value_in_domain(claim_sides(d, s).back(), info->domain, d.symbols, opt);
         if (!in.holds() || in.kind == VerdictKind::HoldsNumerically) {

@@ -222,7 +222,7 @@ int StepContext::declaration_index(const ex& s) const {
 
 bool StepContext::real_domain(const ex& s) const {
   for (const auto& info : d.symbols.all())
-    if (info.sym.is_equal(s)) return info.domain.kind == Domain::Kind::Real;
+    if (info.sym.is_equal(s)) return info.domain.unrestricted();
   return true;  // atoms (abstract functions) are unrestricted
 }
 

@@ -20,7 +20,7 @@ std::string domain_gap(const StepContext& c, const ex& s, const ex& value, const
   if (!info) return "";
   const Domain& dom = info->domain;
   if (!free_of_unknowns(value)) {
-    if (dom.kind == Domain::Kind::Real) return "";   // any real value of what remains will do
+    if (dom.unrestricted()) return "";   // any real value of what remains will do
     return "need not keep " + info->name + " " + dom.to_string() + " (" + info->name + " = " + c.text(formula) + ")";
   }
   detail::RealValue rv = detail::eval_real(value, 60);

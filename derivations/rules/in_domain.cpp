@@ -5,6 +5,7 @@
 #include "derivations/kernel/range.hpp"
 #include "derivations/kernel/sign.hpp"
 #include "derivations/rules/context.hpp"
+#include "derivations/decide/integer.hpp"
 
 namespace dc::rules {
 
@@ -111,6 +112,27 @@ Verdict sign_holds(const ex& g, bool strict, const std::string& what, const Symb
 }  // namespace
 
 Verdict value_in_domain(const ex& g, const Domain& dom, const SymbolTable& t, const ProveOptions& opt) {
+  if (dom.integer) {
+    // the sign or interval first, then integer values: proved for an integer-valued form
+    // (integer symbols combined by +, -, *), refuted for a constant that is no integer
+    Domain plain = dom;
+    plain.integer = false;
+    Verdict v = value_in_domain(g, plain, t, opt);
+    if (!v.holds()) return v;
+    if (integer_valued(g, t)) return v;
+    Verdict r;
+    r.method = "value in the declared domain";
+    if (GiNaC::is_a<GiNaC::numeric>(g) && GiNaC::ex_to<GiNaC::numeric>(g).is_rational()) {
+      r.kind = VerdictKind::Refuted;
+      r.detail = "the value " + print_text(g, t) + " is not an integer (declared " + dom.to_string() + ")";
+      return r;
+    }
+    r.kind = VerdictKind::Undecided;
+    r.reason = "whether " + print_text(g, t) + " is an integer (declared " + dom.to_string() +
+               ") is not decided: only integer symbols combined by +, - and * are known to be integers";
+    r.detail = r.reason;
+    return r;
+  }
   switch (dom.kind) {
     case Domain::Kind::Real: return proved("value in the declared domain", "real");
     case Domain::Kind::Positive: return sign_holds(g, true, "positive", t, opt);

@@ -23,7 +23,7 @@ Verdict definition(StepContext& c, const Relation& claim) {
   // be a premise that contradicts the declaration (and makes Q = -a < 0 citable).
   if (claim.sides[0].kind == NodeKind::Symbol)
     if (const SymbolInfo* info = c.d.symbols.find(claim.sides[0].text);
-        info && !info->defined_by_step && !info->is_function && info->domain.kind != Domain::Kind::Real) {
+        info && !info->defined_by_step && !info->is_function && !info->domain.unrestricted()) {
       const ex value = c.conv(claim.sides[1]);
       // A value through a declared function (`R = x(T)`) takes whatever the file's premises
       // say of that function, which this premise-free check does not know: random function

@@ -198,7 +198,7 @@ Verdict substitute_back(StepContext& c, const Unknowns& u, const std::vector<ex>
     if (GiNaC::is_a<GiNaC::symbol>(u.out(c, lhs))) {
       const SymbolInfo* info = c.d.symbols.find(GiNaC::ex_to<GiNaC::symbol>(u.out(c, lhs)));
       const bool constant_root = GiNaC::is_a<GiNaC::numeric>(u.out(c, G).evalf());
-      if (info && (info->domain.kind == Domain::Kind::Interval ||
+      if (info && (info->domain.kind == Domain::Kind::Interval || info->domain.integer ||
                    (info->domain.kind != Domain::Kind::Real && constant_root))) {
         // (a constant root is compared exactly: T = 0 is not positive)
         const Verdict v = value_in_domain(u.out(c, G), info->domain, c.d.symbols, c.opt);

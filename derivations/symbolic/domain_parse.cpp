@@ -15,7 +15,8 @@ namespace dc {
 namespace {
 
 const char* kExpected =
-    "expected positive, nonnegative, negative, real or an interval such as in [0, 1], in (0, pi) or in [0, pi/2)";
+    "expected positive, nonnegative, negative, real, integer (also positive integer, ...) or an interval such as "
+    "in [0, 1], in (0, pi) or in [0, pi/2)";
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
@@ -26,6 +27,7 @@ GiNaC::ex constant_value(const Node& n) {
       return exact_literal(n.text);
     case NodeKind::Symbol:
       if (n.text == "pi") return GiNaC::Pi;
+      if (n.text == "deg") return GiNaC::Pi / 180;
       if (n.text == "oo")
         throw InputError(n.pos, "an interval bound must be finite; use 'positive', 'nonnegative' or 'negative' for half-lines",
                          n.length);
@@ -72,6 +74,30 @@ Domain parse_domain(std::string_view text, const SourcePos& pos) {
   while (e > b && is_space(text[e - 1])) --e;
   std::string_view t = text.substr(b, e - b);
   if (t.empty()) throw InputError(pos, std::string("missing domain; ") + kExpected);
+  // "integer", "positive integer", "integer in [1, 10]": the domain without the word, integer
+  if (t == "integer") {
+    Domain d = Domain::real();
+    d.integer = true;
+    return d;
+  }
+  if (t.size() > 8 && t.substr(t.size() - 8) == " integer") {
+    const std::size_t word = b + t.size() - 7;
+    Domain d = parse_domain(text.substr(0, word - 1), pos);
+    if (d.kind == Domain::Kind::Interval)
+      throw InputError(position_in(text, pos, word), "write an integer interval as 'integer in [a, b]'", 7);
+    d.integer = true;
+    return d;
+  }
+  if (t.size() > 8 && t.substr(0, 8) == "integer " ) {
+    std::size_t i = b + 8;
+    while (i < e && is_space(text[i])) ++i;
+    if (text.substr(i, e - i).substr(0, 2) != "in")
+      throw InputError(position_in(text, pos, i),
+                       "expected 'in [a, b]' after 'integer', or a sign before it ('positive integer')");
+    Domain d = parse_domain(text.substr(0, e).substr(i), position_in(text, pos, i));
+    d.integer = true;
+    return d;
+  }
   if (t == "real") return Domain::real();
   if (t == "positive") return Domain::positive();
   if (t == "nonnegative") return Domain::nonnegative();

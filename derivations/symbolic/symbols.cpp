@@ -5,6 +5,8 @@
 #include <cctype>
 #include <sstream>
 
+#include <cln/real.h>
+
 #include "derivations/symbolic/verdict.hpp"
 #include "derivations/syntax/source.hpp"
 
@@ -105,6 +107,7 @@ Domain Domain::interval(GiNaC::ex lo, bool lo_open, GiNaC::ex hi, bool hi_open) 
 
 bool Domain::contains(const GiNaC::numeric& x) const {
   if (!x.is_real()) return false;
+  if (integer && !x.is_integer()) return false;
   switch (kind) {
     case Kind::Real: return true;
     case Kind::Positive: return x.is_positive();
@@ -150,19 +153,29 @@ bool Domain::empty() const {
   int c = compare_constants(lo, hi);
   if (c == 2) return true;  // not real constants: no point can satisfy it
   if (c > 0) return true;
-  if (c == 0) return lo_open || hi_open;
-  return false;
+  if (c == 0 && (lo_open || hi_open)) return true;
+  if (!integer) return false;
+  // an integer interval: is there an integer in it? The integers next to the lower end are
+  // tried exactly; past them, an interval at least 2 long always holds one.
+  DigitsGuard g(60);
+  GiNaC::ex l = lo.evalf(), h = hi.evalf();
+  if (!GiNaC::is_a<GiNaC::numeric>(l) || !GiNaC::is_a<GiNaC::numeric>(h)) return true;
+  const GiNaC::numeric start =
+      GiNaC::numeric(cln::floor1(cln::the<cln::cl_R>(GiNaC::ex_to<GiNaC::numeric>(l).to_cl_N()))) - 1;
+  for (int k = 0; k < 4; ++k)
+    if (contains(start + k)) return false;
+  return GiNaC::ex_to<GiNaC::numeric>(h) - GiNaC::ex_to<GiNaC::numeric>(l) < 2;
 }
 
 std::string Domain::to_string() const {
   switch (kind) {
-    case Kind::Real: return "real";
-    case Kind::Positive: return "positive";
-    case Kind::Nonnegative: return "nonnegative";
-    case Kind::Negative: return "negative";
+    case Kind::Real: return integer ? "integer" : "real";
+    case Kind::Positive: return integer ? "positive integer" : "positive";
+    case Kind::Nonnegative: return integer ? "nonnegative integer" : "nonnegative";
+    case Kind::Negative: return integer ? "negative integer" : "negative";
     case Kind::Interval:
-      return std::string("in ") + (lo_open ? "(" : "[") + bound_text(lo) + ", " + bound_text(hi) +
-             (hi_open ? ")" : "]");
+      return std::string(integer ? "integer in " : "in ") + (lo_open ? "(" : "[") + bound_text(lo) + ", " +
+             bound_text(hi) + (hi_open ? ")" : "]");
   }
   return "real";
 }
@@ -216,7 +229,7 @@ SymbolTable SymbolTable::with_bound_variable(const std::string& name) const {
   if (info.is_function) return t;
   const GiNaC::ex old = info.sym;
   info.sym = GiNaC::realsymbol(name);
-  info.domain = Domain::real();
+  info.domain = Domain::real();   // (a real variable of integration even for an integer quantity)
   // relations assumed of the declared quantity say nothing about the dummy variable
   std::vector<Constraint> kept;
   for (const auto& c : t.constraints_)

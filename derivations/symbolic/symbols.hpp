@@ -24,6 +24,10 @@ struct Domain {
   // Interval bounds (exact: rationals or pi multiples); only for Kind::Interval.
   GiNaC::ex lo, hi;
   bool lo_open = false, hi_open = false;
+  // Only integer values (`symbol n : positive integer`): the probe samples integers, the
+  // cascade reduces sin(n*pi), cos(2*n*pi), (-1)^(2*n) (decide/integer.hpp). GiNaC knows
+  // nothing of it: the symbol is a realsymbol (a possymbol when positive).
+  bool integer = false;
 
   static Domain real() { return {}; }
   static Domain positive() { Domain d; d.kind = Kind::Positive; return d; }
@@ -35,11 +39,14 @@ struct Domain {
   bool strictly_positive() const;                 // every value > 0
   bool nonnegative_values() const;                // every value >= 0
   bool empty() const;                             // e.g. (1,1) or [2,1]
-  std::string to_string() const;                  // "positive", "in [0, 1]", "in (0, pi)"
+  std::string to_string() const;                  // "positive", "in [0, 1]", "positive integer"
+  // Every value is "any real" (no sign, interval or integer restriction).
+  bool unrestricted() const { return kind == Kind::Real && !integer; }
 };
 
 // Parse "positive", "nonnegative", "negative", "real", "in [a,b]", "in (a,b]", ... (a, b
-// constant expressions: rationals, pi, pi/2). Throws InputError at `pos` (offset into text).
+// constant expressions: rationals, pi, pi/2), and each of them with "integer": "integer",
+// "positive integer", "integer in [1, 10]". Throws InputError at `pos` (offset into text).
 Domain parse_domain(std::string_view text, const SourcePos& pos);
 
 struct SymbolInfo {
@@ -48,6 +55,9 @@ struct SymbolInfo {
   Domain domain;
   Dimension dimension;
   bool has_dimension = false;  // false: not declared (definitions infer it)
+  // The unit as the author wrote it ("N*s", "rad/s", "m^(-1/2)"), kept for printing; empty
+  // when it was not declared or names dimensions ("velocity", "1"). Checking uses `dimension`.
+  std::string unit;
   GiNaC::ex sym;             // the GiNaC symbol (possymbol when domain is positive)
   SourcePos pos;             // where it was declared or defined
   bool is_function = false;  // declared as a function of other symbols: v(t)

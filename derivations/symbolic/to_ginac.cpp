@@ -116,7 +116,7 @@ void check_count(const Node& n, std::size_t lo, std::size_t hi, const std::strin
 
 // The variable of diff/limit/integral: a declared (non-function) symbol written plainly.
 const SymbolInfo& variable_arg(const Node& call, const Node& arg, const SymbolTable& table) {
-  if (arg.kind != NodeKind::Symbol || arg.text == "pi" || arg.text == "oo")
+  if (arg.kind != NodeKind::Symbol || arg.text == "pi" || arg.text == "deg" || arg.text == "oo")
     throw InputError(arg.pos, "the second argument of " + call.text + "(...) must be a declared symbol, found '" +
                                   short_text(arg) + "'",
                      arg.length);
@@ -177,6 +177,7 @@ class Converter {
         return exact_literal(n.text);
       case NodeKind::Symbol:
         if (n.text == "pi") return GiNaC::Pi;
+        if (n.text == "deg") return GiNaC::Pi / 180;   // degrees: 30*deg = pi/6
         if (n.text == "oo")
           throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo) or as a limit of integration", n.length);
         return lookup_symbol(n, table_).sym;
@@ -428,6 +429,9 @@ class Converter {
     if (f == "diff") {
       check_count(n, 2, 3, "2 or 3 arguments: diff(f, x) or diff(f, x, n)");
       const SymbolInfo& x = variable_arg(n, n.args[1], table_);
+      if (x.domain.integer)
+        throw InputError(n.args[1].pos, "cannot differentiate with respect to '" + x.name + "': it is declared " +
+                                            x.domain.to_string(), n.args[1].length);
       int order = diff_order(n);
       GiNaC::ex body;
       if (is_integral_call(n.args[0])) {
@@ -537,7 +541,7 @@ class Dimensioner {
       case NodeKind::Number:
         return {};
       case NodeKind::Symbol: {
-        if (n.text == "pi") return {};
+        if (n.text == "pi" || n.text == "deg") return {};
         if (n.text == "oo")
           throw InputError(n.pos, "'oo' (infinity) may only appear as the point of limit(f, x, oo) or as a limit of integration", n.length);
         const SymbolInfo& info = lookup_symbol(n, table_);
@@ -598,6 +602,9 @@ class Dimensioner {
     for (auto it = spine.rbegin(); it != spine.rend(); ++it) {
       Dimension r = dim((*it)->args[1]);
       acc = (*it)->kind == NodeKind::Mul ? acc * r : acc / r;
+      if (!acc.representable())
+        throw InputError((*it)->op_pos, "the dimension of this product is not representable (an exponent's numerator and "
+                                        "denominator must stay below 10^6)");
     }
     return acc;
   }
@@ -616,11 +623,11 @@ class Dimensioner {
                            " must be a constant number, found '" + short_text(en) + "'",
                        en.length);
     Dimension out;
-    bool ok = GiNaC::abs(q.numer()) < 1000000 && q.denom() <= 2 && b.pow(q.numer().to_int(), q.denom().to_int(), out);
+    bool ok = GiNaC::abs(q.numer()) < 1000000 && q.denom() < 1000000 && b.pow(q.numer().to_int(), q.denom().to_int(), out);
     if (!ok)
       throw InputError(en.pos,
                        b.to_string() + " raised to " + number_text(q) +
-                           " is not a dimension (exponents must be multiples of 1/2)",
+                           " is not a dimension (an exponent's numerator and denominator must stay below 10^6)",
                        en.length);
     return out;
   }
@@ -647,7 +654,7 @@ class Dimensioner {
         Dimension a = dim(n.args[0]);
         Dimension out;
         if (!a.pow(1, 2, out))
-          throw InputError(n.pos, "the square root of " + a.to_string() + " is not a dimension (exponents must be multiples of 1/2)",
+          throw InputError(n.pos, "the square root of " + a.to_string() + " is not a dimension (an exponent's numerator and denominator must stay below 10^6)",
                            n.length);
         return out;
       }

@@ -24,7 +24,7 @@ namespace {
 
 constexpr int kHardMaxDepth = 1000;
 
-enum class Tok { Number, Ident, Plus, Minus, Star, Slash, Caret, LParen, RParen, Comma, Equals, End };
+enum class Tok { Number, Ident, Plus, Minus, Star, Slash, Caret, LParen, RParen, Comma, Equals, Degree, End };
 
 struct Token {
   Tok kind = Tok::End;
@@ -105,6 +105,14 @@ class Lexer {
         while (j < n && is_ident_char(text_[j])) ++j;
         t.kind = Tok::Ident;
         t.end = j;
+      } else if (c == '\xC2' && i + 1 < n && text_[i + 1] == '\xB0') {
+        // '°' (U+00B0, two bytes in UTF-8): one column
+        t.kind = Tok::Degree;
+        t.end = i + 2;
+        col += 1;
+        i = t.end;
+        toks.push_back(t);
+        continue;
       } else {
         t.end = i + 1;
         switch (c) {
@@ -347,9 +355,26 @@ class Parser {
     return p;
   }
 
-  // power := atom ( '^' unary )?      (right-associative through unary -> power)
+  // postfix := atom ( '°' )?   30° is the product 30*deg, deg = pi/180
+  Parsed postfix() {
+    Parsed p = atom();
+    if (peek().kind != Tok::Degree) return p;
+    const Token& op = next();
+    if (peek().kind == Tok::Degree) fail(peek(), "unexpected second '°'");
+    Parsed deg;
+    deg.node.kind = NodeKind::Symbol;
+    deg.node.text = "deg";
+    deg.node.pos = at(op);
+    deg.node.length = 1;
+    deg.begin = op.begin;
+    deg.end = op.end;
+    deg.end_line = op.line;
+    return binary(NodeKind::Mul, std::move(p), std::move(deg), op);
+  }
+
+  // power := postfix ( '^' unary )?      (right-associative through unary -> power)
   Parsed power() {
-    Parsed base = atom();
+    Parsed base = postfix();
     if (peek().kind != Tok::Caret) return base;
     const Token& op = next();
     enter(op);
@@ -580,6 +605,8 @@ bool is_builtin_function(std::string_view name) {
   return std::find(kBuiltins.begin(), kBuiltins.end(), name) != kBuiltins.end();
 }
 
-bool is_reserved_name(std::string_view name) { return is_builtin_function(name) || name == "pi" || name == "oo"; }
+bool is_reserved_name(std::string_view name) {
+  return is_builtin_function(name) || name == "pi" || name == "deg" || name == "oo";
+}
 
 }  // namespace dc

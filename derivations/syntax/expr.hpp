@@ -12,11 +12,12 @@
 //   product  := unary ( ('*'|'/') unary )*
 //   unary    := ('-'|'+') unary | power
 //   power    := postfix ( '^' unary )?
-//   postfix  := atom
+//   postfix  := atom ( '°' )?                 30° is 30*deg (the tree holds Mul(30, deg))
 //   atom     := number | identifier | identifier '(' args ')' | '(' sum ')'
 //   number   := digits ( '.' digits )?        (exact: 2.5 means 5/2)
 //   identifier := [A-Za-z][A-Za-z0-9_]*       'oo' is +infinity (only where a limit point is expected)
-// Built-in functions: sqrt exp log ln sin cos tan asin acos atan abs
+// Predefined constants: pi, and deg = pi/180 (degrees: sin(30*deg) = 1/2); 'deg' cannot be
+// declared. Built-in functions: sqrt exp log ln sin cos tan asin acos atan abs
 // and the calculus forms  diff(f, x)   diff(f, x, n)   limit(f, x, point)   integral(f, x, a, b)
 // A call of a declared function (e.g. v(t)) is a Call node whose name is that function.
 #pragma once
@@ -83,6 +84,6 @@ std::string to_text(const Node& n);
 std::string to_text(const Relation& r);
 
 bool is_builtin_function(std::string_view name);   // sqrt, exp, ..., diff, limit, integral
-bool is_reserved_name(std::string_view name);      // builtins plus pi, oo, E? (no: only pi, oo)
+bool is_reserved_name(std::string_view name);      // builtins plus pi, deg, oo
 
 }  // namespace dc

@@ -167,4 +167,27 @@ TEST_CASE("claims: units on a line make a dimension mismatch the first evidence"
   CHECK(j[5]["verdict"] == "error");
   CHECK(j[5]["error"].get<std::string>().find("unit of 'v'") != std::string::npos);
   CHECK_FALSE(j[6].contains("dimensions"));
+
+TEST_CASE("equal --assume 'n integer' and degrees: the CLI path", "[cli][assumptions][integer][angles]") {
+  Run p = run({"equal", "sin(n*pi)", "0", "--assume", "n integer"});
+  CAPTURE(p.out, p.err);
+  CHECK(p.exit_code == 0);
+  CHECK(p.out.rfind("proved (identity + integer periods + normal)", 0) == 0);
+  Run f = run({"equal", "cos(n*pi)", "1", "--assume", "n positive integer"});
+  CAPTURE(f.out);
+  CHECK(f.exit_code == 1);
+  CHECK(f.out.rfind("refuted", 0) == 0);
+  Run real = run({"equal", "sin(n*pi)", "0"});
+  CHECK(real.exit_code == 1);
+  Run merged = run({"equal", "cos(2*n*pi)", "1", "--assume", "n > 0, n integer"});
+  CHECK(merged.exit_code == 0);
+  Run none = run({"equal", "n", "n", "--assume", "n integer, n in (0, 1)"});
+  CAPTURE(none.err);
+  CHECK(none.exit_code == 2);
+  CHECK(none.err.find("leave no integer") != std::string::npos);
+  Run deg = run({"equal", "sin(30°)", "1/2"});
+  CAPTURE(deg.out, deg.err);
+  CHECK(deg.exit_code == 0);
+  Run deg2 = run({"equal", "sin(30*deg)", "1/2"});
+  CHECK(deg2.exit_code == 0);
 }

@@ -56,7 +56,10 @@ TEST_CASE("Dimension algebra and printing", "[units]") {
   REQUIRE(m.pow(3, 2, three_halves));
   CHECK((Dimension() / three_halves).to_string() == "1/m^(3/2)");
   Dimension quarter;
-  CHECK_FALSE(half.pow(1, 2, quarter));  // m^(1/4) is not representable
+  REQUIRE(half.pow(1, 2, quarter));  // exponents are exact rationals: m^(1/4)
+  CHECK(quarter.to_string() == "m^(1/4)");
+  Dimension huge;
+  CHECK_FALSE(m.pow(1, 2000000, huge));  // a denominator beyond 10^6 is refused
   Dimension back;
   REQUIRE(half.pow(2, 1, back));
   CHECK(back == m);
@@ -90,7 +93,7 @@ TEST_CASE("parse_dimension errors are positioned", "[units]") {
   InputError e = unit_error("kg*ms");
   CHECK(e.pos().col == 4);
   CHECK(e.length() == 2);
-  CHECK_THAT(e.message(), Catch::StartsWith("unknown unit 'ms'; expected one of kg, m, s, A, K, mol, cd, N, J, W, Pa, Hz, "
+  CHECK_THAT(e.message(), Catch::StartsWith("unknown unit 'ms'; expected one of kg, m, s, A, K, mol, cd, N, J, W, Pa, Hz, rad, sr, "
                                             "mass, length, time, velocity"));
   CHECK_THAT(e.message(), Catch::EndsWith("dimensionless, 1"));
   CHECK(unit_error("m + s").pos().col == 3);
