@@ -465,6 +465,41 @@ claim(S, "false", "st_false_atan_double", "2*atan(x)", "atan(2*x/(1-x^2))", "val
 claim(S, "false", "st_false_heptagon_sum", "cos(pi/7) + cos(3*pi/7) + cos(5*pi/7)", "1/3",
       "it is 1/2 (the look-alike of st_cos_pi_7_sum)")
 
+# ---------------------------------------------------------------- integer symbols (issue 24)
+# True only because n is an integer (a real n refutes them), and their look-alikes that fail at
+# some integers: a checker that samples n off the integers refutes the first kind, one that
+# trusts a few lucky integers accepts the second.
+I = "integer"
+INT, PINT = "integer", "positive integer"
+claim(I, "true", "int_sin_n_pi", "sin(n*pi)", "0", "n integer: a zero of sine", {"n": INT})
+claim(I, "true", "int_cos_2n_pi", "cos(2*n*pi)", "1", "a whole number of turns", {"n": INT})
+claim(I, "true", "int_minus_one_even", "(-1)^(2*n)", "1", "an even power of -1", {"n": INT})
+claim(I, "true", "int_cos_n_pi_sign", "cos(n*pi)", "(-1)^n", "cos alternates at the integers", {"n": INT})
+claim(I, "true", "int_parity_square", "(-1)^(n^2 + n)", "1", "n^2 + n = n*(n + 1) is even", {"n": INT})
+claim(I, "true", "int_shift_by_n_pi", "sin(x + n*pi)", "(-1)^n*sin(x)", "a shift by n half-turns",
+      {"n": PINT, "x": REAL})
+claim(I, "true", "int_box_edge", "sin(n*pi*l/l)", "0", "the particle in a box vanishes at x = L",
+      {"n": PINT, "l": POS})
+claim(I, "false", "int_false_half_period", "sin(n*pi/2)", "0", "1 at n = 1: half periods are not periods",
+      {"n": INT}, w={"n": "1"})
+claim(I, "false", "int_false_cos_n_pi", "cos(n*pi)", "1", "-1 at every odd n", {"n": INT}, w={"n": "3"})
+claim(I, "false", "int_false_sign", "(-1)^n", "1", "-1 at every odd n", {"n": PINT}, w={"n": "5"})
+claim(I, "false", "int_false_parity_cube", "(-1)^(n^3 + 1)", "1", "n^3 + 1 is odd at even n",
+      {"n": INT}, w={"n": "2"})
+claim(I, "false", "int_false_real_n", "cos(2*n*pi)", "1", "n real: true only at the integers",
+      {"n": REAL}, w={"n": "1/4"})
+
+# ---------------------------------------------------------------- angles in degrees (issue 24)
+A = "angles"
+claim(A, "true", "ang_sin_30_deg", "sin(30*deg)", "1/2", "deg is pi/180")
+claim(A, "true", "ang_degree_sign", "cos(60°)", "1/2", "60° is 60*deg")
+claim(A, "true", "ang_tan_45", "tan(45°)", "1", "45° is pi/4")
+claim(A, "true", "ang_theta_deg", "sin(theta*deg)", "sin(pi*theta/180)", "an angle given in degrees",
+      {"theta": REAL})
+claim(A, "false", "ang_false_sin_30", "sin(30*deg)", "sqrt(3)/2", "that is sin(60°)")
+claim(A, "false", "ang_false_degrees_as_radians", "sin(theta*deg)", "sin(theta)",
+      "degrees are not radians", {"theta": REAL}, w={"theta": "90"})
+
 
 # ---------------------------------------------------------------- independent checker
 class Undefined(Exception):
@@ -472,7 +507,8 @@ class Undefined(Exception):
 
 
 LOCALS = {n: sympy.Symbol(n) for n in
-          "x y z a b c d e g l u m m0 m1 m2 v1 v2 theta".split()}
+          "x y z a b c d e g l u m m0 m1 m2 v1 v2 theta n".split()}
+LOCALS["deg"] = sympy.pi / 180
 LOCALS.update({"pi": sympy.pi, "abs": sympy.Abs, "log": sympy.log, "exp": sympy.exp, "sqrt": sympy.sqrt,
                "sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "asin": sympy.asin, "acos": sympy.acos,
                "atan": sympy.atan})
@@ -480,6 +516,7 @@ LOCALS.update({"pi": sympy.pi, "abs": sympy.Abs, "log": sympy.log, "exp": sympy.
 
 def parse(text):
     # decimals are exact, as in derivcheck: 1.5708 -> (15708/10000)
+    text = text.replace("°", "*deg")
     text = re.sub(r"(\d+)\.(\d+)", lambda m: f"({m.group(1)}{m.group(2)}/1{'0' * len(m.group(2))})", text)
     return parse_expr(text.replace("^", "**"), local_dict=LOCALS, evaluate=False)
 
@@ -557,6 +594,9 @@ def value(text, env):
 
 
 def in_domain(dom, v):
+    if dom.endswith("integer") or dom.startswith("integer"):
+        rest = dom.replace("integer", "").strip() or "real"
+        return mpmath.isint(v) and in_domain(rest, v)
     if dom == "real":
         return True
     if dom == "positive":
@@ -639,6 +679,15 @@ def symbols_of(c):
 
 
 def random_value(dom, rng, mag):
+    if "integer" in dom:
+        v = mpf(rng.choice([rng.randint(0, 12), rng.randint(0, 10 ** 6)]))
+        if dom.startswith("positive"):
+            return v + 1
+        if dom.startswith("negative"):
+            return -v - 1
+        if dom.startswith("nonnegative"):
+            return v
+        return v if rng.random() < 0.5 else -v
     if dom.startswith("in") or dom[0] in "[(":
         m = re.fullmatch(r"(?:in\s*)?([\[(])(.*),(.*)([\])])", dom)
         lo, hi = ev(parse(m.group(2)), {}), ev(parse(m.group(3)), {})
