@@ -393,6 +393,8 @@ PointComparison compare_point(const ex& lhs, const ex& rhs, const GiNaC::exmap& 
 // difference, the symbolic stage is wrong (a bug, or a rewrite applied outside its domain).
 // Returns the contradiction's description, or "" when the witness agrees or cannot decide.
 std::string witness_contradiction(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveOptions& opt) {
+  // the kernel decides real values only (probe): a claim written with I has no real witness
+  if (has_imaginary_number(lhs) || has_imaginary_number(rhs)) return "";
   detail::PointSampler sampler({lhs, rhs}, ctx);
   bool abstract = detail::has_abstract_application(lhs) || detail::has_abstract_application(rhs);
   detail::Rng rng(opt.seed ^ 0x5157A1E55ull);

@@ -41,6 +41,14 @@ Verdict definition(StepContext& c, const Relation& claim) {
           in.detail = "the value defined for " + info->name + " must be " + info->domain.to_string() + ": " + in.detail;
           return in;
         }
+        if (in.kind == VerdictKind::Undecided) {   // k = n/2 for an integer k: said, not hidden
+          SideCondition sc;
+          sc.what = print_text(value, c.d.symbols) + " is " + info->domain.to_string();
+          sc.reason = "declared domain of " + info->name;
+          sc.status = SideCondition::Status::Unknown;
+          sc.evidence = in.reason;
+          domain_note = sc;
+        }
       }
     }
   auto with_note = [&](Verdict v) {

@@ -99,7 +99,8 @@ TEST_CASE("parse_dimension errors are positioned", "[units]") {
   CHECK(unit_error("m + s").pos().col == 3);
   CHECK(unit_error("m^2.5").pos().col == 3);
   CHECK(unit_error("2*m").message() == "a unit may contain the number 1 only, found '2'");
-  CHECK(unit_error("m^x").message() == "a unit exponent must be an integer such as 2 or -1");
+  CHECK(unit_error("m^x").message() == "a unit exponent must be an integer such as 2 or -1, or a fraction such as (-1/2)");
+  CHECK(unit_error("m^(1/0)").pos().col == 3);
 }
 
 TEST_CASE("parse_domain: keywords and intervals", "[domain]") {
