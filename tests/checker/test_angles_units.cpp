@@ -86,7 +86,7 @@ TEST_CASE("the degree sign: 30° is 30*deg", "[angles][parser]") {
   }
 }
 
-TEST_CASE(".dc files: deg is predefined; declaring it is a positioned error", "[angles][format]") {
+TEST_CASE(".dc files: deg is predefined, declaring it is a positioned error", "[angles][format]") {
   auto s = check("deg.dc",
                  "symbol theta : in (0, pi/2) [rad]\n"
                  "symbol g : positive [m/s^2]\n"
@@ -114,7 +114,7 @@ TEST_CASE(".dc files: deg is predefined; declaring it is a positioned error", "[
   CHECK_THROWS_AS(equal("deg", "pi/180", "deg > 0"), dc::InputError);
 }
 
-TEST_CASE("rad and sr are dimensionless units; dimensions are still checked", "[units]") {
+TEST_CASE("rad and sr are dimensionless units, dimensions are still checked", "[units]") {
   CHECK(unit("rad").dimensionless());
   CHECK(unit("sr").dimensionless());
   CHECK(unit("rad/s") == unit("1/s"));
