@@ -319,16 +319,35 @@ class BallEvaluator {
     if (sb == BallStatus::NotReal || sb == BallStatus::Pole) return sb;
     if (sx == BallStatus::NotReal || sx == BallStatus::Pole) return sx;
     if (sb != BallStatus::Value || sx != BallStatus::Value) return BallStatus::Unknown;
-    if (arb_is_exact(x.v) && arb_is_int(x.v)) {
-      // an exponent that is exactly an integer here ((-1)^n at an integer n): b^k is real
+    if (!arb_is_positive(b.v) && arb_is_exact(x.v) && arb_is_int(x.v)) {
+      // an exponent that is exactly an integer here ((-1)^n at an integer n): b^k is real.
+      // (A positive base keeps the exp-log path below, which also bounds huge exponents.)
       if (arf_sgn(arb_midref(x.v)) < 0 && arb_contains_zero(b.v))
         return arb_is_zero(b.v) ? pole("division by zero") : unknown("a divisor not separated from 0");
+      if (arb_is_zero(b.v)) {
+        if (!arb_is_positive(x.v)) return unknown("0^0");
+        arb_zero(out);
+        return BallStatus::Value;
+      }
       fmpz_t k;
       fmpz_init(k);
       arf_get_fmpz(k, arb_midref(x.v), ARF_RND_DOWN);
-      arb_pow_fmpz(out, b.v, k, prec_);
+      if (fmpz_bits(k) <= 64) {
+        arb_pow_fmpz(out, b.v, k, prec_);
+        fmpz_clear(k);
+        return finite(out);
+      }
+      const bool odd = fmpz_is_odd(k);
       fmpz_clear(k);
-      return finite(out);
+      if (!arb_is_negative(b.v)) return unknown("a huge integer power of a number not separated from 0");
+      // |b|^k = exp(k log|b|), the sign from the parity of k
+      Tmp l;
+      arb_neg(l.v, b.v);
+      arb_log(l.v, l.v, prec_);
+      arb_mul(l.v, l.v, x.v, prec_);
+      BallStatus st = exp_of(l.v, out);
+      if (odd) arb_neg(out, out);
+      return st;
     }
     if (arb_is_positive(b.v)) {
       // b^x = exp(x log b), through exp_of so that huge exponents stay finite
