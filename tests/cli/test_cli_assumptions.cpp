@@ -167,6 +167,7 @@ TEST_CASE("claims: units on a line make a dimension mismatch the first evidence"
   CHECK(j[5]["verdict"] == "error");
   CHECK(j[5]["error"].get<std::string>().find("unit of 'v'") != std::string::npos);
   CHECK_FALSE(j[6].contains("dimensions"));
+}
 
 TEST_CASE("equal --assume 'n integer' and degrees: the CLI path", "[cli][assumptions][integer][angles]") {
   Run p = run({"equal", "sin(n*pi)", "0", "--assume", "n integer"});
