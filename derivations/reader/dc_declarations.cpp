@@ -283,6 +283,9 @@ void DcReader::introduce_definition(Step& step) {
     // Declared with `symbol`: the definition gives its value; the declaration's dimension
     // is checked like every step's.
     const SymbolInfo* info = d_.symbols.find(name);
+    if (!step.tex.empty())
+      fail(step.tex_pos, "'" + name + "' is declared with 'symbol' (at " + std::to_string(info->pos.line) +
+                             "); give its TeX name there", 3);
     if (info->is_function != !params.empty())
       fail(lhs.pos, "'" + name + "' is declared as a " + (info->is_function ? "function" : "symbol") +
                         " but defined as a " + (params.empty() ? "symbol" : "function"),
@@ -294,6 +297,7 @@ void DcReader::introduce_definition(Step& step) {
   info.name = name;
   info.pos = lhs.pos;
   info.defined_by_step = true;
+  info.tex = step.tex;   // empty: the default from the name (SymbolTable::declare)
   info.is_function = !params.empty();
   info.params = params;
   if (!params.empty()) {

@@ -166,10 +166,15 @@ void DcReader::statement(const Statement& st) {
     Span s;
     for (std::size_t i = 0; i < st.lines.size(); ++i)
       s.append_line(file(), st.lines[i].first, st.lines[i].second, i == 0 ? e : 0);
-    if (w == "title" || w == "section") {
+    if (w == "title" || w == "section" || w == "handout") {
       std::size_t p = 0;
       std::string str = string_literal(s, p, "a quoted " + w + ", e.g. " + w + " \"...\"");
       expect_end(s, p);
+      if (w == "handout") {
+        if (str.find_first_not_of(' ') == std::string::npos) fail(s.at(0), "empty handout title: write it between the quotes");
+        d_.handout = str;
+        return;
+      }
       (w == "title" ? d_.title : d_.section) = str;
     } else if (w == "notation") {
       // notation dot | leibniz: how the LaTeX writes derivatives of declared functions
@@ -199,7 +204,7 @@ void DcReader::statement(const Statement& st) {
     if (l[0] == '(') parse_header(l, st.first_line, h, true);
     std::string shown = w.empty() ? l.substr(0, utf8_length(l, 0)) : w;
     fail({file(), st.first_line, 1},
-         "unknown statement '" + shown + "'; expected one of title, section, symbol, function, assume, "
+         "unknown statement '" + shown + "'; expected one of title, handout, section, symbol, function, assume, "
          "heading, text, remark, figure, notation, or a step '[(TAG)] LABEL: CLAIM'",
          static_cast<int>(std::max<std::size_t>(1, shown.size())));
   }
@@ -218,7 +223,17 @@ void DcReader::prose_statement(const std::string& w, const Span& s, const Source
                                                ", e.g. " + w + " \"...\"");
     expect_end(s, p);
     if (str.find_first_not_of(' ') == std::string::npos) fail(s.at(0), "empty " + w + ": write its text between the quotes");
-    pr.pieces.push_back({ProsePiece::Kind::Text, str, {}});
+    if (pr.kind == Prose::Kind::Figure) {
+      // a caption takes the markup of text ($r^2$, `m*g`, *words*); positions from the opening quote
+      SourcePos open = s.at(nonspace(s, 0));
+      std::vector<SourcePos> cpos;
+      for (std::size_t i = 0; i < str.size(); ++i) cpos.push_back({open.file, open.line, open.col + 1 + static_cast<int>(i)});
+      SourcePos end{open.file, open.line, open.col + 1 + static_cast<int>(str.size())};
+      pr.pieces = parse_prose({str, cpos, end}, [&](const Node& n) { validate_side(n); },
+                              [&](const SourcePos& q, const std::string& msg, int len) { fail(q, msg, len); });
+    } else {
+      pr.pieces.push_back({ProsePiece::Kind::Text, str, {}});
+    }
   } else {
     pr.kind = w == "text" ? Prose::Kind::Paragraph : Prose::Kind::Remark;
     std::size_t b = 0, e = s.text.size();

@@ -62,6 +62,13 @@ void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
     } else if (part.kw == "hide") {
       expect_end(part.span, 0);
       step.hidden = true;
+    } else if (part.kw == "tex") {
+      if (!step.tex.empty()) fail(part.kw_pos, "a step has at most one 'tex'", 3);
+      std::size_t p = 0;
+      step.tex_pos = part.kw_pos;
+      step.tex = string_literal(part.span, p, "a quoted TeX name for the name this step introduces, e.g. tex \"\\omega_n\"");
+      expect_end(part.span, p);
+      if (step.tex.find_first_not_of(' ') == std::string::npos) fail(part.kw_pos, "empty 'tex': write the TeX name between the quotes", 3);
     } else if (part.kw == "note") {
       std::size_t p = 0;
       step.notes.push_back(string_literal(part.span, p, "a quoted note, e.g. note \"...\""));
@@ -99,9 +106,14 @@ void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
   if (step.rule.name == "series") order_term(step);
   // Symbols: a definition introduces its left-hand side; so does a named result whose name
   // was never declared (`W = integral(F, x, 0, L) = F0*L/2  by integrate`).
-  if (step.rule.name == "definition" || (names_operation_result(step) && step.claim.sides[0].kind == NodeKind::Symbol &&
-                                         !d_.symbols.find(step.claim.sides[0].text)))
-    introduce_definition(step);
+  const bool introduces = step.rule.name == "definition" ||
+                          (names_operation_result(step) && step.claim.sides[0].kind == NodeKind::Symbol &&
+                           !d_.symbols.find(step.claim.sides[0].text));
+  if (!step.tex.empty() && !introduces)
+    fail(step.tex_pos, "'tex' gives the TeX name of the name a step introduces; step '" + step.label +
+                           "' introduces none (a definition or a named result does; a declared symbol takes its "
+                           "'tex' on its 'symbol' line)", 3);
+  if (introduces) introduce_definition(step);
   // Undefined symbols (and other conversion errors) in the claim; for an erratum step the
   // printed claim's error is kept for the report, the corrected claim must be valid.
   if (step.erratum) {

@@ -61,6 +61,8 @@ struct Step {
   SourcePos claim_pos;       // of the claim's first character
   RuleSpec rule;
   std::vector<std::string> notes;
+  std::string tex;           // `tex "\omega_n"`: the TeX name of the name this step introduces
+  SourcePos tex_pos;
   std::optional<Erratum> erratum;
   std::optional<std::string> stable_of;   // `stable LABEL "regime"`
   // The claim is a chain `NAME = E1 = E2 ...` whose NAME (a declared symbol, or a declared
@@ -85,6 +87,7 @@ struct Step {
 struct Derivation {
   SourceText source;
   std::string title;
+  std::string handout;       // `handout "..."`: the title of the document `latex` makes of the files
   std::string section;
   SymbolTable symbols;
   std::vector<Step> steps;

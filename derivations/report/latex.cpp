@@ -28,7 +28,8 @@ double width(const Node& n);
 
 class Writer {
  public:
-  explicit Writer(const SymbolTable& t, const LatexStyle& style = {}) : table_(t), style_(style) {}
+  explicit Writer(const SymbolTable& t, const LatexStyle& style = {}, bool in_text = false)
+      : table_(t), style_(style), in_text_(in_text) {}
 
   // An expression at the top of a side, a numerator, an argument: the author's outer
   // parentheses are redundant there and dropped.
@@ -57,7 +58,7 @@ class Writer {
         return "-" + operand(a, need);
       }
       case NodeKind::Mul: return product(n);
-      case NodeKind::Div: return fraction(n);
+      case NodeKind::Div: return in_text_ ? inline_term(n) : fraction(n);
       case NodeKind::Pow: return power(n);
       case NodeKind::Call: return call(n);
     }
@@ -103,7 +104,9 @@ class Writer {
     for (std::size_t i = 0; i < fs.size(); ++i) {
       const Node& f = *fs[i];
       bool last = i + 1 == fs.size();
-      std::string s = operand(f, needs_group_as_factor(f, i == 0) || (!last && is_big_operator(f)));
+      // in running text a quotient before further factors is grouped: (1/2) m v^{2}
+      bool text_quotient = in_text_ && !last && f.kind == NodeKind::Div;
+      std::string s = operand(f, needs_group_as_factor(f, i == 0) || (!last && is_big_operator(f)) || text_quotient);
       if (i == 0) {
         out = s;
         continue;
@@ -160,7 +163,7 @@ class Writer {
 
   // Inline a/b inside an exponent.
   std::string inline_term(const Node& n) {
-    if (n.kind == NodeKind::Div && !n.parenthesized) {
+    if (n.kind == NodeKind::Div && (!n.parenthesized || in_text_)) {   // in text: never \frac
       const Node& a = n.args[0];
       const Node& b = n.args[1];
       bool nb = !(is_atom(b) || b.kind == NodeKind::Pow || b.kind == NodeKind::Call);
@@ -188,7 +191,7 @@ class Writer {
         t && n.args[1].kind == NodeKind::Number && !n.args[1].parenthesized &&
         n.args[1].text.find_first_not_of("0123456789") == std::string::npos) {
       const Node& a = b.args[0];
-      std::string arg = (is_atom(a) || a.kind == NodeKind::Div) && !a.parenthesized ? " " + top(a)
+      std::string arg = bare_argument(a) || (a.kind == NodeKind::Div && !a.parenthesized && !in_text_) ? " " + top(a)
                                                                                     : "\\left(" + top(a) + "\\right)";
       return std::string(t) + "^{" + n.args[1].text + "}" + arg;
     }
@@ -227,6 +230,13 @@ class Writer {
     for (const auto& o : table_.all())
       if (o.name != s->name && (o.tex.empty() ? default_tex_name(o.name) : o.tex) == tex) return false;
     return true;
+  }
+
+  // An argument a function name takes without parentheses: a symbol, a number, or a declared
+  // function at its own parameters (printed as a symbol): \sin\theta for sin(theta(t)).
+  bool bare_argument(const Node& a) {
+    if (a.parenthesized) return false;
+    return is_atom(a) || (a.kind == NodeKind::Call && !is_builtin_function(a.text) && bare_function(a));
   }
 
   // The "d f" of a derivative when f is a symbol or a declared function of the variable.
@@ -290,7 +300,7 @@ class Writer {
     if (f == "abs" && n.args.size() == 1) return "\\left|" + top(n.args[0]) + "\\right|";
     if (const char* t = trig_tex(f); t && n.args.size() == 1) {
       const Node& a = n.args[0];
-      if (is_atom(a) && !a.parenthesized) return std::string(t) + " " + body(a);
+      if (bare_argument(a)) return std::string(t) + " " + body(a);
       return std::string(t) + "\\left(" + top(a) + "\\right)";
     }
     if (f == "diff" && (n.args.size() == 2 || n.args.size() == 3)) {
@@ -337,6 +347,7 @@ class Writer {
  private:
   const SymbolTable& table_;
   LatexStyle style_;
+  bool in_text_ = false;   // math in running text: a/b on the line, never \frac
 };
 
 // Rough printed width (in characters of output) of a side, to decide when a chain breaks.
@@ -376,12 +387,46 @@ bool unicode_tex(std::uint32_t cp, std::string& out) {
       {0x2154, "$\\frac{2}{3}$"}, {0x00E9, "\\'e"}, {0x00E8, "\\`e"}, {0x00FC, "\\\"u"}, {0x00F6, "\\\"o"},
       {0x00E4, "\\\"a"}, {0x00A0, "~"}, {0x2009, "\\,"}, {0x2713, "$\\checkmark$"}, {0x2717, "$\\times$"},
       {0x2202, "$\\partial$"}, {0x2207, "$\\nabla$"}, {0x2206, "$\\Delta$"},
+      // sections, units and typography a lecturer writes in prose
+      {0x00A7, "\\S{}"}, {0x00B6, "\\P{}"}, {0x00B5, "$\\mu$"}, {0x00A9, "\\copyright{}"},
+      {0x00AE, "\\textregistered{}"}, {0x2122, "\\texttrademark{}"}, {0x2022, "\\textbullet{}"},
+      {0x00AD, "\\-"}, {0x2010, "-"}, {0x2011, "-"}, {0x2012, "--"}, {0x2015, "---"}, {0x2044, "/"},
+      {0x201A, ","}, {0x201E, ",,"}, {0x2039, "<"}, {0x203A, ">"}, {0x00AB, "$\\ll$"}, {0x00BB, "$\\gg$"},
+      {0x2002, "\\enspace{}"}, {0x2003, "\\quad{}"}, {0x202F, "\\,"}, {0x200B, ""}, {0xFEFF, ""},
+      {0x00BC, "$\\frac{1}{4}$"}, {0x00BE, "$\\frac{3}{4}$"}, {0x00F7, "$\\div$"}, {0x00AC, "$\\neg$"},
+      {0x2030, "\\textperthousand{}"}, {0x2103, "$^\\circ$C"}, {0x212B, "\\AA{}"}, {0x210F, "$\\hbar$"},
+      {0x2113, "$\\ell$"}, {0x221D, "$\\propto$"}, {0x2261, "$\\equiv$"}, {0x2243, "$\\simeq$"},
+      {0x223C, "$\\sim$"}, {0x2200, "$\\forall$"}, {0x2203, "$\\exists$"}, {0x2208, "$\\in$"},
+      {0x2209, "$\\notin$"}, {0x2282, "$\\subset$"}, {0x2286, "$\\subseteq$"}, {0x222A, "$\\cup$"},
+      {0x2229, "$\\cap$"}, {0x2227, "$\\wedge$"}, {0x2228, "$\\vee$"}, {0x21D4, "$\\Leftrightarrow$"},
+      {0x21D0, "$\\Leftarrow$"}, {0x2194, "$\\leftrightarrow$"}, {0x2191, "$\\uparrow$"},
+      {0x2193, "$\\downarrow$"}, {0x21A6, "$\\mapsto$"}, {0x2220, "$\\angle$"}, {0x22A5, "$\\perp$"},
+      {0x2225, "$\\parallel$"}, {0x2016, "$\\|$"}, {0x27E8, "$\\langle$"}, {0x27E9, "$\\rangle$"},
+      {0x2213, "$\\mp$"}, {0x22C5, "$\\cdot$"}, {0x2218, "$\\circ$"}, {0x2205, "$\\emptyset$"},
+      {0x2211, "$\\sum$"}, {0x220F, "$\\prod$"}, {0x2032, "$'$"}, {0x03D1, "$\\vartheta$"},
+      {0x03D5, "$\\phi$"}, {0x03F5, "$\\epsilon$"}, {0x03F1, "$\\varrho$"}, {0x03D6, "$\\varpi$"},
+      {0x2074, "$^4$"}, {0x2075, "$^5$"}, {0x2076, "$^6$"}, {0x2077, "$^7$"}, {0x2078, "$^8$"},
+      {0x2079, "$^9$"}, {0x207A, "$^+$"}, {0x207B, "$^-$"}, {0x207F, "$^n$"}, {0x2084, "$_4$"},
+      {0x2085, "$_5$"}, {0x2086, "$_6$"}, {0x2087, "$_7$"}, {0x2088, "$_8$"}, {0x2089, "$_9$"},
+      {0x00DF, "\\ss{}"}, {0x00E6, "\\ae{}"}, {0x00C6, "\\AE{}"}, {0x00F8, "\\o{}"}, {0x00D8, "\\O{}"},
+      {0x00E5, "\\aa{}"}, {0x00C5, "\\AA{}"}, {0x0153, "\\oe{}"}, {0x0152, "\\OE{}"}, {0x0131, "\\i{}"},
+      {0x0142, "\\l{}"}, {0x0141, "\\L{}"}, {0x00E7, "\\c{c}"}, {0x00C7, "\\c{C}"},
   };
   for (const auto& m : kMap)
     if (m.cp == cp) {
       out += m.tex;
       return true;
     }
+  // Latin-1 letters with an accent: \'e, \"o, \~n ... (base letter and TeX accent)
+  if (cp >= 0x00C0 && cp <= 0x00FF) {
+    static const char kBase[] = "AAAAA___EEEEIIII_NOOOOO__UUUUY__aaaaa___eeeeiiii_nooooo__uuuuy_y";
+    static const char kAcc[] = "`'^~\"___`'^\"`'^\"_~`'^~\"__`'^\"'__`'^~\"___`'^\"`'^\"_~`'^~\"__`'^\"'_\"";
+    char b = kBase[cp - 0x00C0], a = kAcc[cp - 0x00C0];
+    if (b != '_') {
+      out += std::string("\\") + a + "{" + (b == 'i' ? std::string("\\i") : std::string(1, b)) + "}";
+      return true;
+    }
+  }
   static const char* const kGreekLower[] = {"alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta",
                                             "theta", "iota", "kappa", "lambda", "mu", "nu", "xi", "o",
                                             "pi", "rho", "varsigma", "sigma", "tau", "upsilon", "phi",
@@ -413,6 +458,10 @@ std::string hex4(std::uint32_t cp) {
 
 std::string latex_expression(const Node& n, const SymbolTable& table, const LatexStyle& style) {
   return Writer(table, style).top(n);
+}
+
+std::string latex_inline_expression(const Node& n, const SymbolTable& table, const LatexStyle& style) {
+  return Writer(table, style, true).top(n);
 }
 
 bool latex_prefers_aligned(const Relation& r, const SymbolTable& table) {
@@ -482,6 +531,17 @@ std::string latex_escape_text(const std::string& text) {
         case '>': out += "$>$"; break;
         case '|': out += "$|$"; break;
         case '\n': case '\r': case '\t': out += ' '; break;
+        case '"':
+        case '\'': {
+          // ASCII quotes pair up: one after a space, an opening bracket or the start opens
+          // (``sweet spot'', `word'); any other is a closing quote or an apostrophe (don't).
+          char before = i == 0 ? ' ' : text[i - 1];
+          bool opens = before == ' ' || before == '(' || before == '[' || before == '{' || before == '\n' ||
+                       before == '\t' || before == '"' || before == '\'' || before == '-' || before == '/';
+          if (c == '"') out += opens ? "``" : "''";
+          else out += opens ? "`" : "'";
+          break;
+        }
         default:
           if (c >= 0x20) out += static_cast<char>(c);
       }

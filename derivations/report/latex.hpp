@@ -69,6 +69,9 @@ std::string write_latex(const Derivation& d, const LatexOptions& opt);
 // One expression / relation (no environment). `aligned`: a chain as `a &= b \\ &= c`.
 std::string latex_expression(const Node& n, const SymbolTable& table, const LatexStyle& style = {});
 std::string latex_relation(const Relation& r, const SymbolTable& table, bool aligned = false);
+// An expression in running text (`expr` in prose): quotients on the line, a/b and
+// m (r_1 v_1/s)^{2}/s, so inline math does not open the line spacing.
+std::string latex_inline_expression(const Node& n, const SymbolTable& table, const LatexStyle& style = {});
 
 // The rows of an `align` display: `lhs &= rhs` while the whole chain fits in `limit` (width
 // units of latex_width, about one per printed character), otherwise one row per side
@@ -81,9 +84,11 @@ double latex_width(const Node& n);
 // Would latex_relation print this chain as an aligned block in the document?
 bool latex_prefers_aligned(const Relation& r, const SymbolTable& table);
 
-// Plain text for LaTeX: escapes \ { } $ & # ^ _ % ~ and maps common Unicode (Greek letters,
-// dashes, primes, arrows, superscripts) to LaTeX; any other non-ASCII character becomes
-// \texttt{U+XXXX} so the document always compiles.
+// Plain text for LaTeX: escapes \ { } $ & # ^ _ % ~; pairs ASCII quotes ("a" -> ``a'', 'a' ->
+// `a', an apostrophe stays '); maps the Unicode a lecturer types (section sign \S, Greek
+// letters, micro sign, degree, dashes, typographic quotes, primes, arrows, relations,
+// super- and subscript digits, accented Latin letters) to LaTeX; any other non-ASCII character
+// becomes \texttt{U+XXXX} so the document always compiles.
 std::string latex_escape_text(const std::string& text);
 
 

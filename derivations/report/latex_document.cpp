@@ -98,11 +98,13 @@ std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& 
   for (const auto& p : pieces) {
     switch (p.kind) {
       case ProsePiece::Kind::Text: out += latex_escape_text(p.text); break;
-      case ProsePiece::Kind::Emph: out += "\\emph{" + latex_escape_text(p.text) + "}"; break;
+      case ProsePiece::Kind::Emph:
+        out += "\\emph{" + (p.inner.empty() ? latex_escape_text(p.text) : prose_tex(p.inner, table, style)) + "}";
+        break;
       case ProsePiece::Kind::Math: out += "$" + p.text + "$"; break;
       case ProsePiece::Kind::Expr: {
-        out += "$" + latex_expression(p.expr, table, style);
-        for (const auto& side : p.more) out += " = " + latex_expression(side, table, style);
+        out += "$" + latex_inline_expression(p.expr, table, style);
+        for (const auto& side : p.more) out += " = " + latex_inline_expression(side, table, style);
         out += "$";
         break;
       }
@@ -164,12 +166,38 @@ class DocumentWriter {
     return out;
   }
 
-  // "Quantities." with each declared symbol's unit, symbols of one unit together, in
-  // declaration order: $m_1$, $m_2$ in \si{kg}; $v_1$ in \si{m/s}; dimensionless: $e$.
+  // Does every name in n have a known dimension (declared, or defined from such names)?
+  static bool dimension_known(const Node& n, const SymbolTable& t) {
+    if (n.kind == NodeKind::Symbol) {
+      const SymbolInfo* s = t.find(n.text);
+      return n.text == "pi" || (s && s->has_dimension);
+    }
+    if (n.kind == NodeKind::Call && !is_builtin_function(n.text)) {
+      const SymbolInfo* s = t.find(n.text);
+      if (!s || !s->has_dimension) return false;
+    }
+    for (const auto& a : n.args)
+      if (!dimension_known(a, t)) return false;
+    return true;
+  }
+
+  // "Quantities." with each quantity's unit, quantities of one unit together, in the order
+  // they are declared or defined: $m_1$, $m_2$ in \si{kg}; $v_1$ in \si{m/s}; dimensionless: $e$.
+  // A name introduced by a step (a definition, a named result) is listed with the dimension
+  // the checker infers for it, when every name in its defining expression has a known one.
   static std::string quantities(const Derivation& d) {
     std::vector<std::pair<std::string, std::vector<std::string>>> groups;   // unit -> TeX names
     for (const SymbolInfo& s : d.symbols.all()) {
-      if (s.defined_by_step || !s.has_dimension) continue;
+      if (!s.has_dimension) continue;
+      if (s.defined_by_step) {
+        const Step* def = nullptr;
+        for (const Step& st : d.steps)
+          if (!def && st.claim.sides.size() >= 2 &&
+              (st.claim.sides[0].kind == NodeKind::Symbol || st.claim.sides[0].kind == NodeKind::Call) &&
+              st.claim.sides[0].text == s.name)
+            def = &st;
+        if (!def || !dimension_known(def->claim.sides[1], d.symbols)) continue;
+      }
       // the unit as the author wrote it ([N*s], [rad/s]) when it names units; otherwise the
       // dimension in base units ([momentum] is kg.m/s)
       std::string unit = !s.unit.empty() ? siunitx_unit(s.unit)
@@ -292,10 +320,42 @@ class DocumentWriter {
     return {};
   }
 
+  // What a step's equation holds under, when its rule says so and the equation does not show
+  // it: `by limit x -> p of A` (the equation is A's limit, not A: "(as $x \to p$, with $v_2 =
+  // 0$)"), `by first_order dm, dv of A` ("(to first order in $dm$, $dv$)"), `by series x -> p
+  // of A` without an order term ("(series as $x \to p$)"). Typeset beside the last row, so a
+  // student does not read the special case as a contradiction of the general formula.
+  static std::string condition(const Derivation& d, const Step& s) {
+    const RuleSpec& r = s.rule;
+    auto tex = [&](const Node& n) { return latex_inline_expression(n, d.symbols, style_of(d)); };
+    auto approach = [&] {
+      std::string side = r.dir > 0 ? "^{+}" : r.dir < 0 ? "^{-}" : "";
+      return "$" + tex(r.var->value) + " \\to " + tex(r.point->value) + side + "$";
+    };
+    std::string out;
+    if (r.name == "limit" && !r.into.empty() && r.var && r.point) {
+      out = "as " + approach();
+      for (std::size_t i = 0; i < r.with.size(); ++i) {
+        const Relation& w = r.with[i].equation;
+        std::string eq;
+        for (std::size_t k = 0; k < w.sides.size(); ++k) eq += (k ? " = " : "") + tex(w.sides[k]);
+        out += (i == 0 ? ", with $" : ", $") + eq + "$";
+      }
+    } else if (r.name == "first_order" && !r.smalls.empty()) {
+      out = "to first order in ";
+      for (std::size_t i = 0; i < r.smalls.size(); ++i) out += (i ? ", $" : "$") + tex(r.smalls[i].value) + "$";
+    } else if (r.name == "series" && !r.into.empty() && !s.order_term && r.var && r.point) {
+      out = "series as " + approach();
+    }
+    return out.empty() ? out : "\\qquad\\text{(" + out + ")}";
+  }
+
   // The rows of a step in an align (tag on its last row).
   std::string rows(const Derivation& d, const Step& s, const std::string& last_extra = {}) {
     const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
-    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit(), style_of(d));
+    const std::string cond = s.erratum ? std::string() : condition(d, s);
+    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - (cond.empty() ? 0 : 18), style_of(d));
+    if (!cond.empty()) rs.back() += cond;
     std::string out;
     for (std::size_t i = 0; i < rs.size(); ++i) {
       bool last = i + 1 == rs.size();
@@ -384,7 +444,10 @@ std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOpt
   if (opt.fragment) {
     out += w.fragment_header();
   } else {
+    // --title, else the first file's `handout "..."` line, else a lone file's title
     std::string title = opt.title;
+    for (const Derivation* d : ds)
+      if (title.empty()) title = d->handout;
     if (title.empty()) title = ds.size() == 1 ? ds[0]->title : "Derivations";
     out += w.preamble(title);
   }

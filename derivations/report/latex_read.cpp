@@ -604,6 +604,15 @@ std::vector<LatexDisplay> extract_latex_displays(const std::string& doc) {
     }
     if (s.find("\\footnotemark") != std::string::npos) d.footnote = true;
     strip(s, "\\qquad\\text{(erratum\\footnotemark)}");
+    // a rule's condition beside the equation, \qquad\text{(as $x \to p$)}: not part of the claim
+    for (std::size_t k; (k = s.find("\\qquad\\text{(")) != std::string::npos;) {
+      std::size_t j = s.find('{', k), depth = 0;
+      for (; j < s.size(); ++j) {
+        if (s[j] == '{') ++depth;
+        if (s[j] == '}' && --depth == 0) break;
+      }
+      s.erase(k, std::min(j + 1, s.size()) - k);
+    }
     strip(s, "\\footnotemark");
     strip(s, "\\notag");
     // the gather line break after the display

@@ -72,9 +72,39 @@ const char* const kGreek[] = {"alpha", "beta",  "gamma", "delta", "epsilon", "ze
                               "Theta", "Lambda", "Xi",   "Pi",    "Sigma",   "Phi",
                               "Psi",   "Omega"};
 
+bool is_word(const std::string& s) {
+  if (s.empty()) return false;
+  for (char c : s)
+    if (!std::isalpha(static_cast<unsigned char>(c))) return false;
+  return true;
+}
+
 std::string default_tex(const std::string& name) {
   for (const char* g : kGreek)
     if (name == g) return std::string("\\") + g;
+  // head_sub: omega_n -> \omega_n, theta_max -> \theta_{\mathrm{max}}, v_e -> v_e,
+  // k_G -> k_G, x_12 -> x_{12}, v_omega -> v_{\omega}; a word of two or more letters as a
+  // subscript is a label, upright (\mathrm). Further underscores separate subscripts: a_b_c -> a_{b,c}.
+  if (auto us = name.find('_'); us != std::string::npos && us > 0 && us + 1 < name.size()) {
+    std::string head = default_tex(name.substr(0, us));
+    std::string sub;
+    std::size_t from = us + 1;
+    while (from <= name.size()) {
+      std::size_t to = name.find('_', from);
+      if (to == std::string::npos) to = name.size();
+      std::string part = name.substr(from, to - from);
+      std::string p;
+      bool greek = false;
+      for (const char* g : kGreek) greek = greek || part == g;
+      if (greek) p = "\\" + part;
+      else if (part.size() > 1 && is_word(part)) p = "\\mathrm{" + part + "}";
+      else p = part;
+      sub += (sub.empty() ? "" : ",") + p;
+      from = to + 1;
+    }
+    if (head.find('_') != std::string::npos) head = "{" + head + "}";   // m1_x -> {m_1}_x
+    return head + "_" + (sub.size() == 1 ? sub : "{" + sub + "}");
+  }
   // letters followed by digits: m1 -> m_1, m12 -> m_{12}
   std::size_t i = 0;
   while (i < name.size() && std::isalpha(static_cast<unsigned char>(name[i]))) ++i;

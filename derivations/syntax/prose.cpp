@@ -82,14 +82,29 @@ std::vector<ProsePiece> parse_prose(const ProseSource& src, const std::function<
     }
     if (c == '*') {
       // *emphasis*: opens before a non-space, closes after one; a lone '*' is text
+      // ($...$ and `expr` inside are skipped over and parsed as pieces of the emphasis)
       std::size_t k = i + 1;
-      while (k < t.size() && t[k] != '*' && t[k] != '$' && t[k] != '`') ++k;
+      while (k < t.size() && t[k] != '*') {
+        if (t[k] == '\\' && k + 1 < t.size()) {
+          k += 2;
+          continue;
+        }
+        if (t[k] == '$' || t[k] == '`') {
+          std::size_t close = t.find(t[k], k + 1);
+          if (close == std::string::npos) break;
+          k = close;
+        }
+        ++k;
+      }
       if (k < t.size() && t[k] == '*' && k > i + 1 && t[i + 1] != ' ' && t[k - 1] != ' ') {
         flush();
         std::string w = t.substr(i + 1, k - i - 1);
-        for (char& ch : w)
-          if (ch == '\n') ch = ' ';
-        out.push_back({ProsePiece::Kind::Emph, w, {}});
+        std::vector<SourcePos> wpos;
+        for (std::size_t j = i + 1; j < k; ++j) wpos.push_back(at(j));
+        ProsePiece e{ProsePiece::Kind::Emph, {}, {}, {}};
+        e.inner = parse_prose({w, wpos, at(k)}, validate, fail);
+        e.text = prose_plain_text(e.inner);
+        out.push_back(std::move(e));
         i = k + 1;
         continue;
       }

@@ -1,7 +1,7 @@
 // The inline markup of literate text in .dc files (docs/format.md, "Text"):
 //   $...$      TeX math, copied as written (braces must balance; no '$' inside)
 //   `expr`     an expression in the file's own syntax, typeset with its declared symbols
-//   *words*    emphasis
+//   *words*    emphasis (may hold $...$ and `expr`: *the energy `T` is lost*)
 //   \# \$ \` \*  the character itself
 // Everything else is plain text (escaped for LaTeX when printed).
 #pragma once
@@ -21,10 +21,11 @@ struct ProsePiece {
   std::string text;          // Text/Emph: plain text; Math: TeX between $...$; Expr: as written
   Node expr;                 // Expr: `m1*v1 + m2*v2`, typeset with the file's symbols
   std::vector<Node> more;    // Expr written as an equation `beta = v/c`: the sides after expr
+  std::vector<ProsePiece> inner;   // Emph: its own pieces (text, $math$, `expr`); text is their plain text
 };
 struct Prose {
   enum class Kind { Heading, Paragraph, Remark, Figure } kind = Kind::Paragraph;
-  std::vector<ProsePiece> pieces;   // Heading, Figure: one Text piece (the title / caption)
+  std::vector<ProsePiece> pieces;   // Heading: one Text piece (the title); Figure: the caption's pieces
   SourcePos pos;
   std::size_t before_step = 0;      // index of the step it stands before (steps.size(): after all)
 };

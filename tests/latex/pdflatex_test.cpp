@@ -173,3 +173,30 @@ TEST_CASE("emitted handout compiles with pdflatex", "[latex][pdflatex]") {
     CHECK(warnings.empty());
   }
 }
+
+// The typesetting fixture (tests/data/latex/typesetting.dc: § and other Unicode in prose, paired
+// quotes, emphasis with math, a caption with markup, inline quotients, Greek subscripts, a
+// definition's tex, a limit step's condition, the file's handout title, --units with defined
+// quantities) compiles standalone and with --units, with no overfull box.
+TEST_CASE("typesetting fixture compiles with pdflatex, no overfull box", "[latex][pdflatex]") {
+  if (!have_pdflatex()) {
+    WARN("pdflatex not installed: compile test skipped (tools/install-deps.sh installs it)");
+    return;
+  }
+  const dc::Derivation d =
+      dc::load_derivation(std::string(DERIVCHECK_SOURCE_DIR) + "/tests/data/latex/typesetting.dc");
+  dc::LatexOptions opt;
+  opt.units = std::system("kpsewhich siunitx.sty > /dev/null 2>&1") == 0;
+  const std::string tex = dc::write_latex(d, opt);
+  Compiled c = compile("typesetting", tex);
+  INFO(c.failure);
+  REQUIRE(c.failure.empty());
+  auto warnings = layout_warnings(c.log);
+  CAPTURE(warnings);
+  CHECK(warnings.empty());
+  if (!c.text.empty()) {
+    CHECK(c.text.find("U+") == std::string::npos);
+    CHECK(c.text.find("Handout 10") != std::string::npos);
+    CHECK(c.text.find("\xC2\xA7" "10.3") != std::string::npos);   // the section sign itself
+  }
+}

@@ -30,9 +30,9 @@ inline const std::vector<std::string> kRuleNames = {"given",  "definition", "rew
                                                     "stationary", "maximum", "minimum", "instance"};
 inline const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
 inline const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
-inline const std::vector<std::string> kStatementKeywords = {"title", "section", "symbol", "function", "assume",
+inline const std::vector<std::string> kStatementKeywords = {"title", "handout", "section", "symbol", "function", "assume",
                                                             "heading", "text", "remark", "figure", "notation"};
-inline const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable", "hide"};
+inline const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable", "hide", "tex"};
 
 inline bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
