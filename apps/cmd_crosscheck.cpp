@@ -117,6 +117,19 @@ int run(CrossOptions& o) {
     r.skipped = out.reason;
     all.push_back(std::move(r));
   });
+  // a file with no formula is named with the reason, in file order, not skipped in silence
+  for (std::size_t i = 0; i < derivations.size(); ++i) {
+    if (!formulas(derivations[i]).empty()) continue;
+    num::FormulaReport r;
+    r.file = derivations[i].source.name;
+    r.skipped = num::no_formula_reason(derivations[i]);
+    auto at = std::find_if(all.begin(), all.end(), [&](const num::FormulaReport& x) {
+      for (std::size_t j = i + 1; j < derivations.size(); ++j)
+        if (x.file == derivations[j].source.name) return true;
+      return false;
+    });
+    all.insert(at, std::move(r));
+  }
   std::cout << num::format_crosscheck(all, o.opt);
   if (o.fail_above >= 0) {
     for (const auto& r : all)

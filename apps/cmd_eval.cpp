@@ -1,4 +1,4 @@
-// derivcheck eval FILE LABEL (--at NAME=VALUE,... | --points IN.csv [-o OUT.csv])
+// derivcheck eval FILE LABEL [--for NAME] (--at NAME=VALUE,... | --points IN.csv [-o OUT.csv])
 //                 [--method auto|double|long-double|compensated|stable|reference] [--digits N]
 //
 // reference: the value with N certified significant digits (Arb; numeric/reference/bind.cpp).
@@ -31,6 +31,7 @@ namespace {
 
 struct EvalOptions {
   std::string file, label, at, method, points, output;
+  std::string for_name;   // --for NAME: solve a step that is not 'y = expression' for NAME
   int digits = 50;
   bool digits_given = false;
   BudgetFlags budget;
@@ -67,6 +68,31 @@ Answer evaluate(const Derivation& d, const EvalOptions& o, const std::string& at
   return a;
 }
 
+// The file, with step LABEL solved for --for (or for the one quantity `given` leaves open)
+// when it is not 'y = expression' (solve_step_for).
+Derivation load_for_eval(const EvalOptions& o, const std::vector<std::string>& given) {
+  Derivation d = load_derivation(o.file);
+  solve_step_for(d, o.label, o.for_name, given);
+  return d;
+}
+
+std::vector<std::string> names_in_at(const std::string& at) {
+  std::vector<std::string> out;
+  std::size_t from = 0;
+  while (from <= at.size()) {
+    std::size_t to = at.find(',', from);
+    if (to == std::string::npos) to = at.size();
+    std::string item = at.substr(from, to - from);
+    std::size_t eq = item.find('=');
+    std::string n = item.substr(0, eq);
+    n.erase(0, n.find_first_not_of(" \t"));
+    if (auto e = n.find_last_not_of(" \t"); e != std::string::npos) n.erase(e + 1);
+    if (!n.empty()) out.push_back(n);
+    from = to + 1;
+  }
+  return out;
+}
+
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string q = "\"";
@@ -93,7 +119,7 @@ int run_points(const EvalOptions& o) {
   const std::vector<std::string> header = split_csv_line(lines[0]);
   for (std::size_t i = 0; i < header.size(); ++i)
     if (header[i].empty()) throw InputError({o.points, 1, 1}, "empty column name in the header (column " + std::to_string(i + 1) + ")");
-  const Derivation d = load_derivation(o.file);
+  const Derivation d = load_for_eval(o, header);
   (void)formula(d, o.label);   // an unknown label is an input error before any row runs
 
   // each row's text as --at takes it ("" when the row has the wrong number of cells)
@@ -228,7 +254,7 @@ int run(EvalOptions o) {
   return run_supervised(
       o.budget.resolve(),
       [&o](std::ostream& out) {
-        const Derivation d = load_derivation(o.file);
+        const Derivation d = load_for_eval(o, names_in_at(o.at));
         Answer a;
         try {
           a = evaluate(d, o, o.at);
@@ -255,7 +281,10 @@ const CommandRegistrar registrar(
     [](CLI::App& sub) -> std::function<int()> {
       auto o = std::make_shared<EvalOptions>();
       sub.add_option("file", o->file, "derivation file")->required();
-      sub.add_option("label", o->label, "label of a step 'y = expr'")->required();
+      sub.add_option("label", o->label, "label of a step 'y = expr' (or any equation, with --for)")->required();
+      sub.add_option("--for", o->for_name,
+                     "solve the step for this quantity first (cos(theta) = expr gives theta = acos(expr)); "
+                     "without it, a step that is not 'y = expr' is solved for the one quantity --at leaves out");
       sub.add_option("--at", o->at, "the point: NAME=VALUE,... with exact values (5/2, -0.125, 1e-9, 1e+200)");
       sub.add_option("--method", o->method,
                      "auto (correctly rounded double, default), double, long-double, compensated, stable, or "

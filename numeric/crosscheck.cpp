@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "derivations/decide/prove.hpp"
+#include "derivations/symbolic/functions.hpp"
 #include "numeric/reference/exact.hpp"
 #include "numeric/reference/reference.hpp"
 
@@ -48,6 +49,18 @@ void free_symbol_names(const ex& e, std::set<std::string>& out) {
     return;
   }
   for (std::size_t i = 0; i < e.nops(); ++i) free_symbol_names(e.op(i), out);
+}
+
+// The stress magnitudes of a quantity with a physical unit (docs/numeric.md, "Stress points").
+constexpr double kPhysicalTiny = 1e-60, kPhysicalHuge = 1e60;
+
+// The user's name of the first declared function in e (v for v(t) or a derivative of it);
+// "" when there is none.
+std::string declared_function_in(const ex& e, const SymbolTable& t) {
+  if (const SymbolInfo* s = declared_function_of(e, t)) return s->name;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (std::string n = declared_function_in(e.op(i), t); !n.empty()) return n;
+  return {};
 }
 
 struct Candidate {
@@ -161,7 +174,13 @@ class Checker {
       if (s.domain.kind == Domain::Kind::Nonnegative) with(i, 0.0, nm + " = 0");
       const double sign = base[i] < 0 ? -1.0 : 1.0;
       for (double f : {1e-8, 1e8}) with(i, base[i] * f, nm + " * " + fmt(f, "%g"));
-      for (double a : {1e-160, 1e160, 1e-300, 1e300}) with(i, sign * a, nm + " = " + fmt(sign * a, "%g"));
+      // A quantity with a unit is driven to magnitudes beyond every physical value in SI units
+      // (Planck time 5e-44 s, mass of the observable universe 1e53 kg) but no further: a length
+      // of 1e160 m says nothing about a formula's accuracy. A pure number may take any double.
+      const bool physical = s.has_dimension && !s.dimension.dimensionless();
+      const std::vector<double> extremes =
+          physical ? std::vector<double>{kPhysicalTiny, kPhysicalHuge} : std::vector<double>{1e-160, 1e160, 1e-300, 1e300};
+      for (double a : extremes) with(i, sign * a, nm + " = " + fmt(sign * a, "%g"));
     }
     // like symbols (same declared dimension, not intervals) approaching each other
     for (std::size_t i = 0; i < n; ++i)
@@ -259,6 +278,16 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
     rep.target = f.target;
     if (f.step && f.step->stable_of) rep.stable_of = *f.step->stable_of;
     std::optional<Program> naive;
+    // a function of t (x(t), or its derivative) has no value at a sampled point: say which
+    if (std::string fn = declared_function_in(f.expr, d.symbols); !fn.empty()) {
+      const SymbolInfo* info = d.symbols.find(fn);
+      std::string params;
+      for (std::size_t i = 0; info && i < info->params.size(); ++i) params += (i ? ", " : "") + info->params[i];
+      rep.skipped = "it uses the function " + fn + "(" + params + "), which has no value at a sampled point "
+                    "(crosscheck samples the declared symbols only)";
+      reports.push_back(std::move(rep));
+      continue;
+    }
     try {
       naive = compile(f.expr, f.params);
     } catch (const std::invalid_argument& e) {
@@ -348,6 +377,25 @@ std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptio
   return reports;
 }
 
+std::string no_formula_reason(const Derivation& d) {
+  std::vector<std::string> fns;
+  for (const Step& s : d.steps) {
+    const Relation& r = s.erratum ? s.erratum->corrected : s.claim;
+    if (r.sides.size() < 2 || r.sides[0].kind != NodeKind::Call) continue;
+    const SymbolInfo* info = d.symbols.find(r.sides[0].text);
+    if (!info || !info->is_function) continue;
+    std::string shown = to_text(r.sides[0]);
+    if (std::find(fns.begin(), fns.end(), shown) == fns.end()) fns.push_back(shown);
+  }
+  if (fns.empty())
+    return "no step has the form 'y = expression' with y a declared symbol, which is what crosscheck evaluates";
+  std::string list;
+  for (std::size_t i = 0; i < fns.size() && i < 4; ++i) list += (i ? ", " : "") + fns[i];
+  if (fns.size() > 4) list += ", ...";
+  return "its results are functions (" + list + "), and crosscheck evaluates steps 'y = expression' with y "
+         "a declared symbol: a function of t has no value at a sampled point";
+}
+
 std::vector<SamplePoint> crosscheck_points(const Derivation& d, const Formula& f, const CrossCheckOptions& opt) {
   Checker ck(d, f, opt, mix(opt.seed, d.source.name + ":" + f.label));
   std::vector<SamplePoint> out;
@@ -395,6 +443,10 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
                     "points", "median", "max(rand)", "max(stress)", "worst at");
       out += line;
     }
+    if (r.label.empty()) {   // a file without a formula: why (no_formula_reason)
+      out += "  no formula evaluated: " + r.skipped + "\n";
+      continue;
+    }
     std::string name = r.label;
     if (!r.stable_of.empty()) name += " (stable of " + r.stable_of + ")";
     if (!r.skipped.empty() && r.methods.empty()) {
@@ -428,7 +480,16 @@ std::string format_crosscheck(const std::vector<FormulaReport>& reports, const C
                " ulps; stress points " + shown(bs) + ", max " + fmt(bs->max_ulps_stress) + " ulps\n";
       else
         out += "  " + std::string(28, ' ') + " best: " + b->method + ", max " + fmt(b->max_ulps) + " ulps\n";
-      if (!(b->max_ulps <= 4)) over.push_back(r.label + " (" + b->method + " " + fmt(b->max_ulps) + ")");
+      if (!(b->max_ulps <= 4)) {
+        // inf/nan where the true value is a finite double: an overflow (or 0*inf) inside the
+        // method, not an inaccuracy; say so
+        if (!std::isfinite(b->max_ulps) && b->non_finite > 0)
+          over.push_back(r.label + " (" + b->method + " overflows: a non-finite result at " +
+                         std::to_string(b->non_finite) + " point(s) where the value is a finite double, worst at " +
+                         b->worst_kind + ")");
+        else
+          over.push_back(r.label + " (" + b->method + " " + fmt(b->max_ulps) + ")");
+      }
     }
     if (r.reference_not_double > 0)
       out += "  " + std::string(28, ' ') + " note: " + std::to_string(r.reference_not_double) +

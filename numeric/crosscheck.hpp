@@ -59,6 +59,11 @@ struct FormulaReport {
 
 std::vector<FormulaReport> crosscheck(const Derivation& d, const CrossCheckOptions& opt);
 
+// Why a derivation has no formula crosscheck can evaluate (formulas(d) is empty): its results
+// are functions of t (`x(t) = ...`), or no step has the form `y = expression`. format_crosscheck
+// prints a report with an empty label and this as `skipped` under the file's name.
+std::string no_formula_reason(const Derivation& d);
+
 // The points crosscheck() evaluates one formula at (same seed, domains, constraints and stress
 // points), each with its CLN reference at opt.digits. x in the order of f.params; kind is
 // "random" or the stress description. Used by the closed-form work-precision charts.

@@ -312,7 +312,10 @@ void DcReader::check_ref(const std::string& label, const SourcePos& p) {
     fail(p, "step '" + label + "' is defined later (at " + std::to_string(it->second.line) + ":" +
                 std::to_string(it->second.col) + "); a step may only use earlier steps",
          static_cast<int>(label.size()));
-  fail(p, "unknown label '" + label + "'; expected the label of an earlier step", static_cast<int>(label.size()));
+  std::vector<std::string> earlier;
+  for (const auto& st : d_.steps) earlier.push_back(st.label);
+  fail(p, "unknown label '" + label + "'" + did_you_mean(label, earlier) + "; expected the label of an earlier step",
+       static_cast<int>(label.size()));
 }
 
 RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
@@ -329,7 +332,12 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
   rule_name_ = name;
   if (contains(kRuleNames, name)) spec.name = name;
   else if (contains(kRewriteAliases, name)) spec.name = "rewrite";
-  else fail(name_pos, "unknown rule '" + name + "'; known rules: " + all_rules, static_cast<int>(name.size()));
+  else {
+    std::vector<std::string> names = kRuleNames;
+    names.insert(names.end(), kRewriteAliases.begin(), kRewriteAliases.end());
+    fail(name_pos, "unknown rule '" + name + "'" + did_you_mean(name, names) + "; known rules: " + all_rules,
+         static_cast<int>(name.size()));
+  }
   {
     std::size_t b = 0, e = s.text.size();
     trim_range(s.text, b, e);
@@ -653,7 +661,14 @@ RuleArg DcReader::symbol_arg(const Span& s, std::size_t b, std::size_t e) {
   if (!plain_identifier(s, b, e)) fail(a.pos, "expected a symbol name, found '" + a.label + "'", a.length);
   const SymbolInfo* info = d_.symbols.find(a.label);
   if (!info || info->is_function)
-    fail(a.pos, "undefined symbol '" + a.label + "': declare it with 'symbol " + a.label + " ...'", a.length);
+  {
+    std::vector<std::string> names;
+    for (const auto& sym : d_.symbols.all())
+      if (!sym.is_function) names.push_back(sym.name);
+    fail(a.pos, "undefined symbol '" + a.label + "'" + did_you_mean(a.label, names) + ": declare it with 'symbol " +
+                    a.label + " ...'",
+         a.length);
+  }
   a.kind = RuleArg::Kind::Symbol;
   a.value = parse_expression(a.label, a.pos);
   return a;

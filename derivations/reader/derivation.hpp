@@ -157,6 +157,14 @@ struct Formula {
   const Step* step = nullptr;
 };
 Formula formula(const Derivation& d, const std::string& label);
+// `eval FILE STEP --for NAME` (solve_for.cpp): rewrite step LABEL's equation in `d` as
+// `NAME = expression` by undoing the operations around NAME's one occurrence (exact inverses
+// only: + - * /, powers, exp, log, sqrt of a nonnegative side, sin/cos/tan of NAME declared in
+// the inverse's range). Without for_name: a step already 'y = expression' is left alone,
+// otherwise NAME is the one symbol of the equation not in `given`. Throws a positioned
+// InputError when the step cannot be solved that way.
+void solve_step_for(Derivation& d, const std::string& label, const std::string& for_name,
+                    const std::vector<std::string>& given);
 std::vector<Formula> formulas(const Derivation& d);   // every step of that shape, file order
 
 }  // namespace dc

@@ -88,12 +88,23 @@ std::string number_text(const GiNaC::numeric& x) {
                    1);
 }
 
+// The table's names of one kind (symbols or functions), in declaration order: candidates for
+// "did you mean".
+std::vector<std::string> names_of(const SymbolTable& table, bool functions) {
+  std::vector<std::string> out;
+  for (const auto& s : table.all())
+    if (s.is_function == functions) out.push_back(s.name);
+  if (!functions) out.push_back("pi");
+  return out;
+}
+
 const SymbolInfo& lookup_symbol(const Node& n, const SymbolTable& table) {
   const SymbolInfo* info = table.find(n.text);
   if (!info && n.text == "O") misplaced_order_term(n);
   if (!info)
     throw InputError(n.pos,
-                     "undefined symbol '" + n.text + "': declare it with 'symbol " + n.text +
+                     "undefined symbol '" + n.text + "'" + did_you_mean(n.text, names_of(table, false)) +
+                         ": declare it with 'symbol " + n.text +
                          " : DOMAIN [UNIT]' or define it in an earlier step",
                      n.length);
   if (info->is_function) {
@@ -150,7 +161,13 @@ const SymbolInfo& declared_function(const Node& n, const SymbolTable& table) {
   if (!info && n.text == "O") misplaced_order_term(n);
   if (!info)
     throw InputError(n.pos,
-                     "unknown function '" + n.text + "': built-in functions are " + kBuiltinList +
+                     "unknown function '" + n.text + "'" + did_you_mean(n.text, [&] {
+                       auto c = names_of(table, true);
+                       for (const char* b : {"sqrt", "exp", "log", "ln", "sin", "cos", "tan", "asin", "acos", "atan",
+                                             "abs", "diff", "limit", "integral"})
+                         c.push_back(b);
+                       return c;
+                     }()) + ": built-in functions are " + kBuiltinList +
                          "; declare others with 'function " + n.text + "(t) : DOMAIN [UNIT]'",
                      static_cast<int>(n.text.size()));
   if (!info->is_function)

@@ -97,4 +97,37 @@ std::string InputError::format() const {
   return out;
 }
 
+namespace {
+// Optimal string alignment distance (Damerau-Levenshtein without repeated edits of a substring).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  return d[a.size()][b.size()];
+}
+}  // namespace
+
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates) {
+  const std::size_t limit = name.size() <= 4 ? 1 : name.size() <= 8 ? 2 : 3;
+  const std::string* best = nullptr;
+  std::size_t best_d = limit + 1;
+  for (const auto& c : candidates) {
+    if (c == name) return {};
+    // far longer or shorter names cannot be near: skip the table
+    if ((c.size() > name.size() ? c.size() - name.size() : name.size() - c.size()) > limit) continue;
+    std::size_t dist = edit_distance(name, c);
+    if (dist < best_d) {
+      best_d = dist;
+      best = &c;
+    }
+  }
+  return best ? " (did you mean '" + *best + "'?)" : std::string();
+}
+
 }  // namespace dc

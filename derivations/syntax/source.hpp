@@ -60,4 +60,11 @@ class InputError : public std::runtime_error {
   Severity severity_ = Severity::Error;
 };
 
+// A suggestion for a misspelt name: " (did you mean 'theta'?)" for the candidate nearest to
+// `name` in edit distance (insertions, deletions, substitutions and swaps of neighbours), when
+// that distance is at most 1 for names of up to 4 characters, 2 up to 8 and 3 beyond; the
+// first such candidate in the given order on a tie; "" when none is that near (or `name` is
+// itself a candidate).
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& candidates);
+
 }  // namespace dc
