@@ -334,12 +334,17 @@ class DocumentWriter {
     };
     std::string out;
     if (r.name == "limit" && !r.into.empty() && r.var && r.point) {
-      out = "as " + approach();
+      // a chain that already shows the limit (v = lim_{m2 -> oo} ... = -v1) needs only the `with`
+      bool shown = false;
+      for (const Node& side : s.claim.sides)
+        shown = shown || (side.kind == NodeKind::Call && side.text == "limit" && side.args.size() >= 2 &&
+                          to_text(side.args[1]) == to_text(r.var->value));
+      out = shown ? "" : "as " + approach();
       for (std::size_t i = 0; i < r.with.size(); ++i) {
         const Relation& w = r.with[i].equation;
         std::string eq;
         for (std::size_t k = 0; k < w.sides.size(); ++k) eq += (k ? " = " : "") + tex(w.sides[k]);
-        out += (i == 0 ? ", with $" : ", $") + eq + "$";
+        out += (i == 0 ? (out.empty() ? "with $" : ", with $") : ", $") + eq + "$";
       }
     } else if (r.name == "first_order" && !r.smalls.empty()) {
       out = "to first order in ";

@@ -32,7 +32,7 @@ dc::InputError load_error(const std::string& path) {
 
 TEST_CASE("malformed files give positioned errors saying what was expected", "[format][errors]") {
   auto x = GENERATE(values<Expected>({
-      {"unknown_statement", 2, 1, "unknown statement 'symbl'; expected one of title, section, symbol"},
+      {"unknown_statement", 2, 1, "unknown statement 'symbl'; expected one of title, handout, section, symbol"},
       {"duplicate_label", 4, 1, "duplicate label 'a' (first defined at 2:1)"},
       {"later_label", 3, 16, "step 'b' is defined later (at 4:1)"},
       {"unknown_label", 3, 16, "unknown label 'nowhere'"},

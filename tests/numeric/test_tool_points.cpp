@@ -68,7 +68,7 @@ TEST_CASE("crosscheck: functions of t are named as the user wrote them, and a fi
   CHECK(has(r.out, "no formula evaluated: its results are functions (x(t), v(t))"));
 }
 
-TEST_CASE("crosscheck: stress points stay physical for quantities with a unit; overflow is named",
+TEST_CASE("crosscheck: stress points stay physical for quantities with a unit, overflow is named",
           "[numeric][crosscheck][tool-points]") {
   const dc::Derivation d = dc::load_derivation(data("stress_range.dc"));
   dc::num::CrossCheckOptions opt;
