@@ -38,17 +38,6 @@ InputError quoted(const InputError& e, const std::string& text) {
   return e.with_line_text(text);
 }
 
-const char* op_text(Constraint::Op op) {
-  switch (op) {
-    case Constraint::Op::Lt: return "<";
-    case Constraint::Op::Le: return "<=";
-    case Constraint::Op::Gt: return ">";
-    case Constraint::Op::Ge: return ">=";
-    case Constraint::Op::Ne: return "!=";
-  }
-  return "?";
-}
-
 }  // namespace
 
 std::vector<AssumptionItem> parse_assumptions(const std::string& text, const SourcePos& origin) {

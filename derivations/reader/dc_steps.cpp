@@ -472,6 +472,11 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
       if (plain_identifier(s, it.first, it.second) && info && info->is_function) {
         RuleArg f = a;
         f.kind = RuleArg::Kind::Symbol;
+        // the name as written, for printers (the rule finds its applications itself)
+        f.value.kind = NodeKind::Symbol;
+        f.value.text = a.label;
+        f.value.pos = a.pos;
+        f.value.length = a.length;
         spec.smalls.push_back(f);
       } else if (plain_identifier(s, it.first, it.second)) {
         spec.smalls.push_back(symbol_arg(s, it.first, it.second));

@@ -86,17 +86,6 @@ bool maybe_equal(const ex& a, const ex& b, const GiNaC::exmap& pt) {
   }
 }
 
-const char* op_text(Constraint::Op op) {
-  switch (op) {
-    case Constraint::Op::Lt: return "<";
-    case Constraint::Op::Le: return "<=";
-    case Constraint::Op::Gt: return ">";
-    case Constraint::Op::Ge: return ">=";
-    case Constraint::Op::Ne: return "!=";
-  }
-  return "?";
-}
-
 }  // namespace
 
 Verdict instance(StepContext& c, const Relation& claim) {

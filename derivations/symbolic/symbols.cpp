@@ -315,4 +315,16 @@ Constraint::Op flipped(Constraint::Op op) {
   return op;
 }
 
+const char* op_text(Constraint::Op op) {
+  using Op = Constraint::Op;
+  switch (op) {
+    case Op::Lt: return "<";
+    case Op::Le: return "<=";
+    case Op::Gt: return ">";
+    case Op::Ge: return ">=";
+    case Op::Ne: return "!=";
+  }
+  return "?";
+}
+
 }  // namespace dc

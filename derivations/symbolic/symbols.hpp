@@ -77,6 +77,8 @@ struct Constraint {
 bool sign_satisfies(Constraint::Op op, int sign);
 // The same relation with its sides exchanged: a < b is b > a.
 Constraint::Op flipped(Constraint::Op op);
+// The relation as written in assumptions: "<", "<=", ">", ">=", "!=".
+const char* op_text(Constraint::Op op);
 
 class SymbolTable {
  public:

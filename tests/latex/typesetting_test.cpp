@@ -117,3 +117,22 @@ TEST_CASE("typesetting: --units lists the defined quantities too", "[latex][type
   CHECK(has(tex, "$\\omega_n$, $\\Omega$, $\\omega_d$ in \\si{"));
   CHECK(has(tex, "$\\tau$ in \\si{J}"));
 }
+
+TEST_CASE("typesetting: first_order of a declared function names the function", "[latex][typesetting]") {
+  // the small quantity is the function itself (its applications are found by the rule): the
+  // condition prints its TeX name, as for a symbol
+  const dc::Derivation d = from_text(
+      "symbol g : positive [1]\n"
+      "symbol t : real [1]\n"
+      "function theta(t) : real [1] tex \"\\theta\"\n"
+      "eom: diff(theta(t), t, 2) = -g*sin(theta(t))\n"
+      "    by given\n"
+      "lin: diff(theta(t), t, 2) = -g*theta(t)\n"
+      "    by first_order theta of eom\n"
+      "lin2: diff(theta(t), t, 2) = -g*theta(t)\n"
+      "    by first_order theta(t) of eom\n");
+  const std::string tex = dc::write_latex(d, {});
+  CAPTURE(tex);
+  CHECK(has(tex, "\\text{(to first order in $\\theta$)}"));
+  CHECK_FALSE(has(tex, "to first order in $$"));
+}
