@@ -69,6 +69,9 @@ struct TexChain {
   bool continues = false;              // the row began with a relation (&= ...): sides[0] is
                                        // empty (kind Number, text ""); the reader takes the
                                        // previous row's last side
+  bool continues_side = false;         // the row began with '+' or '-' after '&' or \quad
+                                       // (`&\quad + c`): sides[0] (sign included) is the rest
+                                       // of the previous row's last side, broken over rows
 };
 
 // What the parser took a token to mean, reported to the author ("e read as Euler's number").
@@ -93,12 +96,19 @@ struct TexRow {
 struct TexMacro {
   int arity = 0;
   std::string body;
+  bool has_default = false;            // \newcommand{\x}[2][d]{..}: argument 1 is optional, [d]
+  std::string default_arg;
 };
 
 struct TexContext {
   std::map<std::string, TexMacro> macros;     // key without the backslash
   std::set<std::string> functions;            // identifiers written f(x) that are calls
   bool e_is_euler = true;                     // e^{x} is exp(x); else e is a symbol
+  // The document also uses e as a symbol (the seed handout's coefficient of restitution, in
+  // `1 - e^2`): with e_is_euler, e^2, e^{2}, e^{-1} (a plain number as the exponent) is then
+  // the symbol's power and e^{...} with a letter in the exponent is exp. Each choice is a
+  // TexReading.
+  bool e_numeric_power_is_symbol = false;
   ParseLimits limits;
 };
 

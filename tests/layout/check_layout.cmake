@@ -14,6 +14,7 @@ endif()
 # Dependency order: each folder may include itself and the folders listed before it.
 set(STAGES
   derivations/syntax        # the author's text: positions, the expression tree, units, prose
+  derivations/syntax/tex    # TeX math rows as authors write them -> the same expression tree
   derivations/symbolic      # the tree as GiNaC: symbols, domains, conversion, printer, verdict types
   derivations/kernel        # trusted: Arb balls, sampling, ranges, the probe, quadrature
   derivations/decide        # prove_equal's cascade, side conditions, satisfiability
@@ -21,6 +22,7 @@ set(STAGES
   derivations/calculus      # limit entry, order terms, antiderivatives, definite integrals
   derivations/reader        # the .dc reader -> Derivation
   derivations/rules         # one file per rule; check_step / check_derivation
+  derivations/document      # the author's LaTeX/Markdown -> Derivation; the justification search
   derivations/report        # text, JSON, LaTeX
   derivations/claims        # the JSONL claim bank and `equal`
   derivations/exec          # worker processes, budgets, batches, shards
