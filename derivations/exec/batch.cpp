@@ -1,3 +1,4 @@
+#include "derivations/document/document.hpp"
 #include "derivations/exec/batch.hpp"
 
 #include <sys/stat.h>
@@ -35,7 +36,7 @@ std::vector<std::optional<InputError>> try_reading(const std::vector<std::string
             [&files](const std::string& task) -> std::string {
               const std::string& path = files[read_u32(task, 0)];
               try {
-                (void)load_derivation(path);
+                (void)load_any(path);
                 return "";
               } catch (const InputError& e) {
                 return encode(e);
@@ -91,7 +92,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& files, const
       }
       auto t0 = std::chrono::steady_clock::now();
       try {
-        reports[f].derivation.emplace(load_derivation(files[f]));
+        reports[f].derivation.emplace(load_any(files[f]));
       } catch (const InputError& e) {   // the worker read it; a second read should agree
         reports[f].input_error = e;
         continue;
@@ -109,7 +110,7 @@ std::vector<FileReport> check_files(const std::vector<std::string>& files, const
   Pool pool(std::min<int>(opt.jobs, static_cast<int>(std::max<std::size_t>(1, steps.size()))), opt.budget,
             [&reports, prove](const std::string& task) -> std::string {
               const Derivation& d = *reports[read_u32(task, 0)].derivation;
-              return encode(check_step(d, d.steps[read_u32(task, 4)], prove));
+              return encode(check_any_step(d, d.steps[read_u32(task, 4)], prove));
             });
   Progress progress(opt.progress, "steps");
   std::size_t next = 0, delivered = 0;

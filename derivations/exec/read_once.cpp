@@ -2,6 +2,8 @@
 // only supervises it.
 #include "derivations/exec/read_once.hpp"
 
+#include "derivations/document/document.hpp"
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
@@ -89,7 +91,7 @@ std::vector<ReadFile> read_in_child(const std::vector<std::string>& files, const
     const auto t0 = std::chrono::steady_clock::now();
     setitimer(ITIMER_PROF, &arm, nullptr);
     try {
-      out[i].derivation.emplace(load_derivation(files[i]));
+      out[i].derivation.emplace(load_any(files[i]));
     } catch (const InputError& e) {
       out[i].error = e;
     } catch (const std::bad_alloc&) {

@@ -142,6 +142,9 @@ std::string encode(const StepResult& res) {
   for (const auto& e : res.errors) put(w, e);
   w.u64((res.erratum_reported ? 1u : 0u) | (res.premise ? 2u : 0u) | (res.input_error ? 4u : 0u));
   w.f64(res.seconds);
+  w.str(res.found_rule);
+  w.u64(res.found_rows.size());
+  for (const auto& row : res.found_rows) w.str(row);
   return w.take();
 }
 
@@ -159,6 +162,9 @@ StepResult decode_step_result(const std::string& bytes, const Step* step) {
   res.premise = flags & 2u;
   res.input_error = flags & 4u;
   res.seconds = r.f64();
+  res.found_rule = r.str();
+  const std::uint64_t rows = r.u64();
+  for (std::uint64_t i = 0; i < rows; ++i) res.found_rows.push_back(r.str());
   return res;
 }
 

@@ -52,6 +52,21 @@ struct Erratum {
   SourcePos pos;
 };
 
+// A step read from an author's LaTeX or Markdown document (derivations/document/): the author
+// wrote no rule; the checker searches for one. What the search may use and must respect.
+struct DocumentRow {
+  int link = 0;                     // 0: the row's only relation; 1, 2, ...: its relations in order
+  int display = 0;                  // which displayed equation of the document it is in (0, 1, ...)
+  std::string relation = "=";       // "=", "approx", "<", "<=", ">", ">=", "!=", "inline" (a given
+                                    // written in the prose)
+  std::vector<std::string> nearby;  // labels of earlier steps the search may cite, nearest first
+  std::vector<std::string> locals;  // labels of the inline givens in force for this row
+  std::vector<std::string> cited;   // labels the author cites (\eqref, "(9.6)") before or in the row
+  std::string hint;                 // words of the prose before the display ("substitut", "integrat")
+  std::string not_read;             // non-empty: why the row is not checked (notation not read yet)
+  std::vector<std::string> vectors; // names written bold or with an arrow
+};
+
 struct Step {
   std::string label;
   std::string tag;           // "9.6" (without parentheses), may be empty
@@ -81,6 +96,7 @@ struct Step {
   // Positioned warnings and notes about this step that stop nothing: a premise that mentions a
   // name an earlier step's named result bound (the premise then speaks of that value).
   std::vector<InputError> diagnostics;
+  std::optional<DocumentRow> document_row;   // set for a step read from a document
 };
 
 

@@ -1,8 +1,10 @@
 #include "derivations/report/report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
+#include "derivations/document/document.hpp"
 #include "derivations/syntax/io.hpp"
 
 namespace dc {
@@ -140,11 +142,12 @@ FileReport check_file(const std::string& path, const ProveOptions& opt) {
   fr.file = path;
   auto t0 = std::chrono::steady_clock::now();
   try {
-    fr.derivation.emplace(load_derivation(path));
+    fr.derivation.emplace(load_any(path));
   } catch (const InputError& e) {
     fr.input_error = e;
   }
-  if (fr.derivation) fr.summary = check_derivation(*fr.derivation, opt);
+  if (fr.derivation)
+    for (const auto& s : fr.derivation->steps) fr.summary.add(check_any_step(*fr.derivation, s, opt));
   fr.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return fr;
 }
@@ -176,6 +179,24 @@ Totals totals(const std::vector<FileReport>& files) {
   return t;
 }
 
+// The rule of a step as the report names it: the rule the author wrote, or for a document step
+// the justification the search found ("follows from (9.6), L120", "identity", "given").
+std::string rule_text(const Derivation& d, const Step& s, const StepResult& r) {
+  if (!s.document_row) return s.rule.written_name;
+  if (r.found_rule.empty()) return "(no justification found)";
+  if (r.found_rows.empty()) return r.found_rule;
+  std::string rows;
+  std::vector<std::string> named;
+  for (const auto& label : r.found_rows) {
+    const Step* st = d.find(label);
+    const std::string name = st && !st->tag.empty() ? "(" + st->tag + ")" : label;
+    if (std::find(named.begin(), named.end(), name) != named.end()) continue;   // links of one tagged row
+    named.push_back(name);
+    rows += (rows.empty() ? "" : ", ") + name;
+  }
+  return (r.verdict.kind == VerdictKind::Refuted ? "against " : "follows from ") + rows;
+}
+
 std::string format_text(const std::vector<FileReport>& files, const ReportOptions& opt) {
   std::string out;
   for (const auto& f : files) {
@@ -195,8 +216,9 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
       if (!s.tag.empty()) line += " (" + s.tag + ")";
       // A step whose own error stopped its rule is "not checked" (the error follows), never ✗
       // beside "undecided".
-      line += " " + s.rule.written_name + " \u2014 " +
-              (r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
+      line += " " + rule_text(d, s, r) + " \u2014 " +
+              (r.premise && r.verdict.holds() && s.document_row ? "given: " + r.verdict.detail
+               : r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
                : own > 0 && r.verdict.kind == VerdictKind::Undecided ? std::string("not checked")
                                                                      : verdict_phrase(r.verdict));
       if (own > 0) line += "; " + std::to_string(own) + (own == 1 ? " error" : " errors");
@@ -256,7 +278,11 @@ nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const Repor
       j["tag"] = s.tag;
       j["line"] = s.pos.line;
       j["col"] = s.pos.col;
-      j["rule"] = s.rule.written_name;
+      j["rule"] = s.document_row ? r.found_rule : s.rule.written_name;
+      if (s.document_row) {
+        j["link"] = s.document_row->link;
+        j["justification"] = {{"rule", r.found_rule}, {"rows", r.found_rows}};
+      }
       j["claim"] = s.claim_text;
       if (s.erratum) {
         j["erratum"] = {{"why", s.erratum->why}, {"corrected", s.erratum->corrected_text}};

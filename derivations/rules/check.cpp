@@ -219,7 +219,8 @@ void CheckSummary::add(StepResult r) {
   std::size_t own_errors = r.errors.size() - (r.erratum_reported ? 1 : 0);
   if (r.erratum_reported) ++errata;
   // a definition written as a chain (`T = E1 = E2`) also claims E1 = E2: not a premise
-  r.premise = s.rule.name == "given" || (s.rule.name == "definition" && s.claim.sides.size() <= 2);
+  // (a document step says itself whether the search took it as a given)
+  if (!s.document_row) r.premise = s.rule.name == "given" || (s.rule.name == "definition" && s.claim.sides.size() <= 2);
   if (r.input_error) ++input_errors;
   if (own_errors > 0) ++errors;
   else if (r.premise && r.verdict.holds()) ++premises;

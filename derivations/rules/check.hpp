@@ -22,6 +22,10 @@ struct StepResult {
   bool premise = false;             // rule given/definition: a premise, checked only for symbols and dimensions
   bool input_error = false;         // the step's input cannot be used (contradictory references): exit code 2
   double seconds = 0;
+  // A document step (Step::document_row): the justification the search found — the rule as a
+  // .dc `by` line would name it ("rewrite", "follows", "limit", "given") and the steps it used.
+  std::string found_rule;
+  std::vector<std::string> found_rows;
 };
 
 StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt = {});

@@ -1,0 +1,207 @@
+// The document reader and the justification search (derivations/document/): LaTeX and
+// Markdown read as written, every displayed relation a step with a verdict at its line.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <string>
+
+#include "derivations/document/document.hpp"
+#include "derivations/syntax/document.hpp"
+
+namespace {
+
+using dc::VerdictKind;
+
+struct Row {
+  std::string label;
+  int line = 0;
+  int link = 0;
+  std::string verdict;   // premise, proved, holds_numerically, refuted, undecided
+  std::string rule;
+  std::string reason;
+};
+
+std::vector<Row> check(const std::string& name, const std::string& text) {
+  dc::Derivation d = dc::read_document(dc::SourceText{name, text});
+  std::vector<Row> out;
+  for (const auto& s : d.steps) {
+    dc::StepResult r = dc::check_any_step(d, s);
+    Row row;
+    row.label = s.label;
+    row.line = s.pos.line;
+    row.link = s.document_row ? s.document_row->link : 0;
+    row.verdict = r.premise && r.verdict.holds() ? "premise" : dc::to_string(r.verdict.kind);
+    row.rule = r.found_rule;
+    row.reason = r.verdict.reason;
+    out.push_back(row);
+  }
+  return out;
+}
+
+const Row& at(const std::vector<Row>& rows, int line, int link = 0) {
+  for (const auto& r : rows)
+    if (r.line == line && r.link == link) return r;
+  FAIL("no row at line " << line << " link " << link);
+  return rows.front();
+}
+
+}  // namespace
+
+TEST_CASE("document split: Markdown displays, rows of aligned, inline math, code skipped") {
+  const std::string md =
+      "# Notes\n"                                     // 1
+      "Let $x = 2$ here.\n"                           // 2
+      "\n"                                            // 3
+      "$$a = b \\quad (1.1)$$\n"                      // 4
+      "```\n$$not = math$$\n```\n"                    // 5-7
+      "$$\\begin{aligned} p &= q \\\\\n"              // 8
+      "  &= r\\end{aligned}$$\n"                      // 9
+      "Costs \\$5 and $5.\n";                         // 10
+  dc::Document doc = dc::split_document(dc::SourceText{"n.md", md});
+  REQUIRE(doc.displays.size() == 2);
+  CHECK(doc.displays[0].rows.size() == 1);
+  CHECK(doc.displays[0].rows[0].origin.line == 4);
+  CHECK(doc.displays[0].rows[0].origin.col == 3);
+  REQUIRE(doc.displays[1].rows.size() == 2);
+  CHECK(doc.displays[1].rows[0].text == "p &= q");
+  CHECK(doc.displays[1].rows[1].origin.line == 9);
+  CHECK(doc.displays[1].rows[1].text.rfind("&= r", 0) == 0);
+  REQUIRE(doc.inlines.size() == 1);   // "$5." is no math: no closing '$'
+  CHECK(doc.inlines[0].text == "x = 2");
+  CHECK(doc.inlines[0].displays_before == 0);
+}
+
+TEST_CASE("document split: LaTeX environments, comments, directives, sectioning") {
+  const std::string tex =
+      "\\documentclass{article}\n"                                  // 1
+      "\\newcommand{\\half}{\\frac{1}{2}}\n"                        // 2
+      "% derivcheck: symbol m : positive [kg]\n"                    // 3
+      "\\begin{document}\n"                                         // 4
+      "\\section{One}\n"                                            // 5
+      "% $$ignored = comment$$\n"                                   // 6
+      "\\begin{eqnarray}\n"                                         // 7
+      "  T &=& \\half m v^2 \\nonumber \\\\\n"                     // 8
+      "  E &=& T + V\n"                                             // 9
+      "\\end{eqnarray}\n"                                           // 10
+      "\\begin{equation} y = \\begin{split} a \\\\ b\\end{split}\\end{equation}\n"   // 11
+      "\\end{document}\n";
+  dc::Document doc = dc::split_document(dc::SourceText{"n.tex", tex});
+  CHECK(doc.kind == dc::Document::Kind::Latex);
+  REQUIRE(doc.directives.size() == 1);
+  CHECK(doc.directives[0].text == "symbol m : positive [kg]");
+  CHECK(doc.directives[0].origin.line == 3);
+  REQUIRE(doc.displays.size() == 2);
+  REQUIRE(doc.displays[0].rows.size() == 2);
+  CHECK(doc.displays[0].rows[0].origin.line == 8);
+  CHECK(doc.displays[0].rows[1].origin.line == 9);
+  CHECK(doc.displays[0].section == 1);
+  CHECK(doc.displays[1].rows.size() == 2);   // split unwrapped: its rows are the display's
+}
+
+TEST_CASE("document split: an unclosed display is a positioned error") {
+  try {
+    (void)dc::split_document(dc::SourceText{"bad.md", "text\n\n$$ a = b\n"});
+    FAIL("no error");
+  } catch (const dc::InputError& e) {
+    CHECK(e.pos().line == 3);
+    CHECK(e.pos().col == 1);
+    CHECK(e.message().find("'$$' is not closed") != std::string::npos);
+  }
+}
+
+TEST_CASE("document check: givens, derived rows, a chain, and a slip refuted at its row") {
+  const std::string md =
+      "Momentum before and after, and the restitution law:\n"                 // 1
+      "\n"                                                                    // 2
+      "$$m_1 u_1 + m_2 u_2 = m_1 w_1 + m_2 w_2$$\n"                           // 3
+      "\n"                                                                    // 4
+      "$$w_2 - w_1 = c (u_1 - u_2)$$\n"                                       // 5
+      "\n"                                                                    // 6
+      "Solving the two for the velocities after the collision:\n"             // 7
+      "\n"                                                                    // 8
+      "$$w_1 = \\frac{m_1 u_1 + m_2 u_2 - c m_2 (u_1 - u_2)}{m_1 + m_2}$$\n"  // 9
+      "\n"                                                                    // 10
+      "$$w_2 = \\frac{m_1 u_1 + m_2 u_2 + c m_1 (u_1 - u_2)}{m_1 + m_1}$$\n"  // 11 (slip: m_1 + m_1)
+      "\n"                                                                    // 12
+      "$$(m_1 + m_2)^2 = m_1^2 + 2 m_1 m_2 + m_2^2 = m_1^2 + m_2^2$$\n";     // 13 (second link wrong)
+  auto rows = check("impact.md", md);
+  CHECK(at(rows, 3).verdict == "premise");
+  CHECK(at(rows, 5).verdict == "premise");   // introduces c
+  const Row& w1 = at(rows, 9);
+  CHECK(w1.verdict == "proved");
+  CHECK(w1.rule == "rewrite");
+  CHECK(at(rows, 11).verdict == "refuted");
+  CHECK(at(rows, 13, 1).verdict == "proved");
+  CHECK(at(rows, 13, 1).rule == "identity");
+  CHECK(at(rows, 13, 2).verdict == "refuted");
+}
+
+TEST_CASE("document check: an inline given is in force for the display after it only") {
+  const std::string md =
+      "$$y = a x + b$$\n"                                   // 1
+      "\n"                                                  // 2
+      "For the special case $b = 0$ this is\n"              // 3
+      "\n"                                                  // 4
+      "$$y = a x$$\n"                                       // 5
+      "\n"                                                  // 6
+      "and in general again\n"                              // 7
+      "\n"                                                  // 8
+      "$$y - b = a x$$\n"                                   // 9
+      "\n"                                                  // 10
+      "$$y - b = 2 a x$$\n";                               // 11 (wrong in general)
+  auto rows = check("case.md", md);
+  CHECK(at(rows, 1).verdict == "premise");
+  CHECK(at(rows, 5).verdict == "proved");
+  CHECK(at(rows, 9).verdict == "proved");
+  // b = 0 is not in force here: the slip is refuted, not derived from the special case
+  CHECK(at(rows, 11).verdict == "refuted");
+}
+
+TEST_CASE("document check: a name set again by a later display is not refuted against the earlier one") {
+  // documents reuse a name for the next case's quantity; a counterexample against the earlier
+  // meaning is no evidence, so the row is undecided with that reason
+  const std::string md =
+      "$$y = a x + b$$\n"          // 1
+      "\n"                         // 2
+      "$$y = a x + 2 b$$\n";       // 3
+  auto rows = check("reuse.md", md);
+  CHECK(at(rows, 3).verdict == "undecided");
+  CHECK(at(rows, 3).reason.find("'y' is set by L1") != std::string::npos);
+}
+
+TEST_CASE("document check: what is not read is undecided with the reason, the rest goes on") {
+  const std::string md =
+      "$$x = \\frac{-b \\pm \\sqrt{b^2 - 4 a c}}{2 a}$$\n"   // 1
+      "\n"                                                  // 2
+      "$$s = v t$$\n"                                       // 3
+      "\n"                                                  // 4
+      "$$s \\approx 3 t$$\n"                                // 5
+      "\n"                                                  // 6
+      "$$s < 2 v t$$\n";                                    // 7
+  auto rows = check("unread.md", md);
+  CHECK(at(rows, 1).verdict == "undecided");
+  CHECK(at(rows, 1).reason.find("not read") != std::string::npos);
+  CHECK(at(rows, 3).verdict == "premise");
+  CHECK(at(rows, 5).verdict == "undecided");   // an approximation is never refuted
+  CHECK(at(rows, 7).verdict == "undecided");
+}
+
+TEST_CASE("document check: LaTeX align rows continue with &=, labels are cited") {
+  const std::string tex =
+      "\\documentclass{article}\n"                                                   // 1
+      "\\newcommand{\\half}{\\frac{1}{2}}\n"                                         // 2
+      "\\begin{document}\n"                                                          // 3
+      "\\begin{equation} K = \\half M V^2 \\label{eq:k}\\end{equation}\n"            // 4
+      "With $V = 2 U$, from \\eqref{eq:k}:\n"                                        // 5
+      "\\begin{align}\n"                                                             // 6
+      "  K &= \\half M (2 U)^2 \\\\\n"                                               // 7
+      "    &= 2 M U^2 \\\\\n"                                                        // 8
+      "    &= 4 M U^2\n"                                                             // 9 (slip)
+      "\\end{align}\n"                                                               // 10
+      "\\end{document}\n";
+  auto rows = check("energy.tex", tex);
+  CHECK(at(rows, 4).verdict == "premise");
+  CHECK(at(rows, 7).verdict == "proved");
+  CHECK(at(rows, 8).verdict == "proved");
+  CHECK(at(rows, 9).verdict == "refuted");
+}
