@@ -101,6 +101,10 @@ Parsed Parser::atom() {
   if (cs == "binom" || cs == "choose") fail(t, "binomial coefficients are not read yet");
   if (cs == "langle") fail(t, "\\langle (a bracket or mean value) is not read yet");
   if (cs == "Delta") return name();
+  static const char* const kRelations[] = {"gg", "ll", "propto", "in", "notin", "subset", "subseteq", "forall",
+                                            "exists", "perp", "parallel", "cong", "lesssim", "gtrsim", "asymp"};
+  for (const char* r : kRelations)
+    if (cs == r) fail(t, "the relation \\" + cs + " is not read yet");
   fail(t, "unknown control sequence \\" + cs + " (define it with \\newcommand in the preamble if it is yours)");
 }
 
@@ -316,7 +320,15 @@ Parsed Parser::function(const Token& cs, const char* fname) {
       expo = std::move(sc.value);
     }
   }
-  if (peek().is('_')) fail(peek(), "a subscript on \\" + cs.text + " (a logarithm's base) is not read yet");
+  std::optional<Parsed> base;
+  if (peek().is('_') && f == "log") {  // \log_{10} x is log(x)/log(10)
+    next();
+    Script sc = script();
+    if (sc.kind != Script::Expr) fail(cs, "expected the base of \\log");
+    base = std::move(sc.value);
+    if (peek().is('^')) fail(peek(), "a power of a logarithm with a base is not read yet");
+  }
+  if (peek().is('_')) fail(peek(), "a subscript on \\" + cs.text + " is not read yet");
   Parsed arg;
   const Token* last = nullptr;
   if (peek().is('(')) {
@@ -337,6 +349,14 @@ Parsed Parser::function(const Token& cs, const char* fname) {
   a.push_back(std::move(arg));
   Parsed out = call(f, std::move(a), cs);
   if (last) extend(out, *last);
+  if (base) {
+    std::vector<Parsed> b;
+    b.push_back(std::move(*base));
+    Parsed den = call("log", std::move(b), cs);
+    Parsed q = binary(NodeKind::Div, std::move(out), std::move(den), cs);
+    q.node.pos = at(cs);
+    return q;
+  }
   if (expo) out = binary(NodeKind::Pow, std::move(out), std::move(*expo), *caret);
   return out;
 }
@@ -552,6 +572,7 @@ Parsed Parser::roman(const Token& cs) {
     pos_ = e + 1;
     return function(cs, f);
   }
+  while (!s.empty() && (s.back() == '.' || s.back() == ' ')) s.pop_back();  // \text{const.}
   bool word = !s.empty();
   for (char c : s) word = word && ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_');
   if (!word) fail(cs, "text '" + s + "' inside an expression is not read yet");

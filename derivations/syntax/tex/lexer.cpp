@@ -3,7 +3,9 @@
 //
 // Expansion is iterative (a stack of pending tokens, no recursion) and bounded: at most
 // kMaxExpansions macro calls per row and kMaxPending pending tokens, so a macro that calls
-// itself, or one that doubles at every call, is an error at its call in time linear in the limit.
+// itself, or one that doubles at every call, is an error at its call in time linear in the limit;
+// kMaxWork bounds the tokens moved through arguments and bodies (nested calls \a{\a{\a{..}}}
+// would otherwise cost the square of their depth).
 #include <algorithm>
 #include <map>
 #include <string>
@@ -19,6 +21,7 @@ namespace {
 
 constexpr int kMaxExpansions = 2000;
 constexpr std::size_t kMaxPending = 200000;
+constexpr std::size_t kMaxWork = 200000;  // tokens moved through arguments and bodies in one row
 
 bool is_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 
@@ -111,6 +114,11 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
   out.reserve(toks.size() + 8);
   std::map<std::string, std::vector<Token>> bodies;
   int expansions = 0;
+  std::size_t work = 0;
+  // buffers kept across calls: a large argument would otherwise be a fresh allocation (and fresh
+  // pages) at every call
+  std::vector<std::vector<Token>> args(9);
+  std::vector<Token> result;
   auto fail = [&](const Token& at, const std::string& msg) -> void {
     throw InputError(SourcePos{origin.file, at.line, at.col}, msg, static_cast<int>(std::max<std::size_t>(1, at.end - at.off)));
   };
@@ -127,10 +135,10 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
                   " times in one row: does it call itself?");
     // arguments: a {group} or a single token each; an optional first one in [..] when declared
     const TexMacro& mac = m->second;
-    std::vector<std::vector<Token>> args;
     std::size_t call_end = t.end;
     for (int a = 0; a < mac.arity; ++a) {
-      std::vector<Token> arg;
+      std::vector<Token>& arg = args[static_cast<std::size_t>(a)];
+      arg.clear();
       if (a == 0 && mac.has_default) {
         if (!pending.empty() && pending.back().is('[')) {
           pending.pop_back();
@@ -152,7 +160,6 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
           arg.pop_back();
           for (Token& x : arg) x.off = t.off, x.end = t.end, x.line = t.line, x.col = t.col;
         }
-        args.push_back(std::move(arg));
         continue;
       }
       if (pending.empty()) fail(t, "expected argument " + std::to_string(a + 1) + " of \\" + t.text);
@@ -175,7 +182,6 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
       } else {
         arg.push_back(std::move(x));
       }
-      args.push_back(std::move(arg));
     }
     auto b = bodies.find(t.text);
     if (b == bodies.end()) {
@@ -184,14 +190,14 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
       b = bodies.emplace(t.text, std::move(body)).first;
     }
     // the expansion, pushed in reverse; body tokens take the position of the call
-    std::vector<Token> result;
+    result.clear();
     const std::vector<Token>& body = b->second;
     for (std::size_t k = 0; k < body.size(); ++k) {
       const Token& x = body[k];
       if (x.is('#') && k + 1 < body.size() && body[k + 1].kind == TokKind::Char && body[k + 1].text.size() == 1 &&
           body[k + 1].text[0] >= '1' && body[k + 1].text[0] <= '9') {
         std::size_t idx = static_cast<std::size_t>(body[k + 1].text[0] - '1');
-        if (idx < args.size()) result.insert(result.end(), args[idx].begin(), args[idx].end());
+        if (idx < static_cast<std::size_t>(mac.arity)) result.insert(result.end(), args[idx].begin(), args[idx].end());
         ++k;
         continue;
       }
@@ -203,6 +209,11 @@ std::vector<Token> expand(std::vector<Token> toks, const TexContext& ctx, const 
       y.space_before = k == 0 ? t.space_before : x.space_before;
       result.push_back(std::move(y));
     }
+    work += result.size();
+    for (int a = 0; a < mac.arity; ++a) work += args[static_cast<std::size_t>(a)].size();
+    if (work > kMaxWork)
+      fail(t, "macro expansion in this row moves more than " + std::to_string(kMaxWork) + " tokens (nested calls of \\" +
+                  t.text + "?)");
     if (pending.size() + result.size() > kMaxPending)
       fail(t, "macro \\" + t.text + " expands to more than " + std::to_string(kMaxPending) + " tokens");
     for (auto it = result.rbegin(); it != result.rend(); ++it) pending.push_back(std::move(*it));

@@ -4,6 +4,8 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 #include "derivations/syntax/tex/internal/tokens.hpp"
 
@@ -15,6 +17,13 @@ bool in(const std::array<std::string_view, N>& table, std::string_view s) {
   return std::find(table.begin(), table.end(), s) != table.end();
 }
 
+// A table looked up often (every control sequence): hashed once.
+template <std::size_t N>
+bool in_hashed(const std::array<std::string_view, N>& table, std::string_view s) {
+  static const std::unordered_set<std::string_view> set(table.begin(), table.end());
+  return set.count(s) > 0;
+}
+
 constexpr std::array<std::string_view, 48> kGreek = {
     "alpha", "beta",    "gamma", "delta",  "epsilon", "varepsilon", "zeta",   "eta",     "theta",  "vartheta",
     "iota",  "kappa",   "lambda", "mu",    "nu",      "xi",         "rho",    "varrho",  "sigma",  "varsigma",
@@ -22,9 +31,9 @@ constexpr std::array<std::string_view, 48> kGreek = {
     "Lambda", "Xi",     "Sigma", "Upsilon", "Phi",    "Psi",        "Omega",  "ell",     "hbar",   "Pi",
     "varpi", "digamma", "aleph", "imath",  "jmath",   "wp",         "partial_", "nabla_"};
 
-constexpr std::array<std::string_view, 17> kIgnored = {
+constexpr std::array<std::string_view, 20> kIgnored = {
     ",", ";", ":", "!", " ", "displaystyle", "textstyle", "scriptstyle", "nonumber", "notag", "limits", "nolimits",
-    "mathstrut", "strut", "ensuremath", "relax", "allowbreak"};
+    "mathstrut", "strut", "ensuremath", "relax", "allowbreak", "displaybreak", "nobreak", "medspace"};
 
 constexpr std::array<std::string_view, 16> kSizes = {"big",  "Big",  "bigg",  "Bigg",  "bigl", "Bigl", "biggl", "Biggl",
                                                      "bigr", "Bigr", "biggr", "Biggr", "bigm", "Bigm", "biggm", "Biggm"};
@@ -44,7 +53,7 @@ constexpr std::array<std::string_view, 52> kUnits = {
 
 }  // namespace
 
-bool is_greek(std::string_view cs) { return in(kGreek, cs); }
+bool is_greek(std::string_view cs) { return in_hashed(kGreek, cs); }
 
 const char* function_name(std::string_view cs) {
   static const std::array<std::pair<std::string_view, const char*>, 20> kFunctions = {{
@@ -66,7 +75,7 @@ bool relation_of(const Token& t, TexRel& rel) {
     return false;
   }
   if (t.kind != TokKind::Cs) return false;
-  static const std::array<std::pair<std::string_view, TexRel>, 30> kRels = {{
+  static const std::unordered_map<std::string_view, TexRel> kRels = {
       {"approx", TexRel::Approx},     {"simeq", TexRel::Approx},     {"sim", TexRel::Approx},
       {"thickapprox", TexRel::Approx}, {"le", TexRel::Le},           {"leq", TexRel::Le},
       {"leqslant", TexRel::Le},       {"ge", TexRel::Ge},            {"geq", TexRel::Ge},
@@ -77,14 +86,14 @@ bool relation_of(const Token& t, TexRel& rel) {
       {"rightarrow", TexRel::Gives},  {"longrightarrow", TexRel::Gives}, {"to", TexRel::Gives},
       {"therefore", TexRel::Gives},   {"iff", TexRel::Gives},        {"Leftrightarrow", TexRel::Gives},
       {"Longleftrightarrow", TexRel::Gives}, {"mapsto", TexRel::Gives}, {"leadsto", TexRel::Gives},
-  }};
-  for (const auto& [k, v] : kRels)
-    if (k == t.text) return rel = v, true;
+  };
+  auto it = kRels.find(t.text);
+  if (it != kRels.end()) return rel = it->second, true;
   return false;
 }
 
-bool is_ignored_cs(std::string_view cs) { return in(kIgnored, cs); }
-bool is_size_cs(std::string_view cs) { return in(kSizes, cs); }
+bool is_ignored_cs(std::string_view cs) { return in_hashed(kIgnored, cs); }
+bool is_size_cs(std::string_view cs) { return in_hashed(kSizes, cs); }
 
 bool is_separator_word(std::string_view text) {
   std::size_t b = text.find_first_not_of(" ,;.:");

@@ -78,7 +78,11 @@ std::string Parser::describe(const Token& t) const {
 
 std::string Parser::describe_real(const Token& t) const {
   if (t.kind == TokKind::End) return "end of row";
-  return "'" + std::string(t.kind == TokKind::Cs ? "\\" : "") + t.text + "'";
+  std::string s = "'";  // appended piece by piece (GCC 12 warns falsely on "'" + std::string(..))
+  if (t.kind == TokKind::Cs) s += '\\';
+  s += t.text;
+  s += '\'';
+  return s;
 }
 
 void Parser::fail(const Token& t, const std::string& msg) const {
@@ -201,6 +205,13 @@ std::pair<std::size_t, std::size_t> Parser::arg_range(const std::string& what) {
     return {b, e};
   }
   if (t.is('}')) fail(t, "expected " + what + ", found '}'");
+  // _\text{max}, ^\mathbf{v}: a command and its group are one argument
+  if (t.kind == TokKind::Cs && pos_ + 1 < end_ && toks_[pos_ + 1].is('{') &&
+      (is_roman_cs(t.text) || is_vector_cs(t.text) || decoration_of(t.text))) {
+    std::size_t b = pos_;
+    pos_ = match_[pos_ + 1] + 1;
+    return {b, pos_};
+  }
   ++pos_;
   return {pos_ - 1, pos_};
 }
@@ -405,6 +416,7 @@ void Parser::name_core(NameParts& parts) {
       std::string s;
       for (std::size_t i = b; i < e; ++i) {
         const Token& x = toks_[i];
+        if (x.is('.') && i + 1 == e) continue;  // \text{const.}
         if (!(is_letter_tok(x) || is_digit_tok(x) || x.is('_'))) fail(x, "expected letters in \\" + t.text + "{...}, found " + describe_real(x));
         s += x.text;
       }
@@ -531,6 +543,9 @@ std::size_t Parser::differential_at(std::size_t i) const {
 bool Parser::is_d_mark(std::size_t i, std::size_t& after) const {
   const Token& t = toks_[i];
   if (t.is('d') || t.is_cs("partial")) return after = i + 1, true;
+  std::size_t inner = 0;
+  if (t.is('{') && match_[i] > i + 1 && is_d_mark(i + 1, inner) && inner == match_[i])  // {\rm d}
+    return after = match_[i] + 1, true;
   bool roman = t.kind == TokKind::Cs && (t.text == "mathrm" || t.text == "text" || t.text == "operatorname" ||
                                          t.text == "mathit" || t.text == "textrm" || t.text == "rm");
   if (!roman || i + 1 >= toks_.size()) return false;
@@ -573,6 +588,10 @@ Parsed Parser::term(bool operand) {
     if (!operand && (t.is('*') || t.is_cs("cdot") || t.is_cs("times"))) {
       const Token& op = next();
       Parsed right = signed_factor();
+      const Node& l = left.node.kind == NodeKind::Mul && !left.node.parenthesized ? left.node.args[1] : left.node;
+      if (op.is_cs("times") && l.kind == NodeKind::Symbol && right.node.kind == NodeKind::Symbol &&
+          row_.vector_names.count(l.text) && row_.vector_names.count(right.node.text))
+        fail(op, "\\times between two vectors (a cross product) is not read yet");
       left = binary(NodeKind::Mul, std::move(left), std::move(right), op);
       continue;
     }
@@ -600,6 +619,9 @@ Parsed Parser::term(bool operand) {
     if (!starts_factor(t)) break;
     if (operand && t.kind == TokKind::Cs && (function_name(t.text) || t.text == "lim" || t.text == "int")) break;
     if (is_unit_group(pos_) && is_numeric(left.node)) {
+      // a unit belongs to a side (9.81\,\mathrm{m/s^2}); inside a fraction or a group it would
+      // need unit algebra
+      if (nest_ > 0) fail(t, "a number with a unit inside an expression is not read yet (only a side that is a number and its unit)");
       take_unit();
       continue;
     }
@@ -627,8 +649,14 @@ void Parser::take_unit() {
   std::size_t b = pos_ + 1, e = match_[pos_];
   pos_ = e + 1;
   std::string u = unit_text(plain(b, e));
-  if (!unit_.empty() && unit_ != u) fail(t, "two different units in one side ('" + unit_ + "' and '" + u + "') are not read yet");
-  unit_ = u;
+  if (!unit_.empty() && unit_end_ == b - 2) {
+    unit_ += "*" + u;  // 1\,\mathrm{kg}\,\mathrm{m}: adjacent unit groups multiply
+  } else {
+    if (!unit_.empty() && unit_ != u)
+      fail(t, "two different units in one side ('" + unit_ + "' and '" + u + "') are not read yet");
+    unit_ = u;
+  }
+  unit_end_ = pos_;
 }
 
 Parsed Parser::signed_factor() {
@@ -679,6 +707,9 @@ Parsed Parser::factor() {
       p = binary(NodeKind::Mul, std::move(p), symbol("deg", d), d);
     } else if (peek().is('!')) {
       fail(peek(), "a factorial is not read yet");
+    } else if (peek().is_cs("%")) {
+      const Token& pc = next();  // 5\% is 5/100
+      p = binary(NodeKind::Div, std::move(p), leaf(NodeKind::Number, "100", pc, pc), pc);
     } else {
       break;
     }

@@ -2,6 +2,7 @@
 // \tag, \eqref and a trailing (9.6) are taken out, the row is split at top-level separators
 // (, ; : \quad \text{and}) and at "gives" arrows, and each piece is read as a chain.
 #include <string>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -45,6 +46,16 @@ bool tag_text(const std::string& s) {
       return false;
   }
   return digit;
+}
+
+// The control sequences clean() and rewrite_physics() act on (all others pass unchanged).
+bool cleaned_cs(const std::string& c) {
+  static const std::unordered_set<std::string> kCleaned = {
+      "Cref", "\\", "abs", "autoref", "boxed", "colon", "color", "cref", "dd", "enspace", "eqref", "hfill",
+      "hphantom", "hskip", "hspace", "intertext", "label", "lbrack", "left", "lparen", "mbox", "middle", "norm",
+      "overset", "pd", "pdv", "dv", "odv", "phantom", "qquad", "qty", "quad", "rbrack", "ref", "right", "rparen",
+      "shortintertext", "stackrel", "tag", "text", "textnormal", "textrm", "vert", "vphantom", "vspace"};
+  return kCleaned.count(c) > 0;
 }
 
 Token with(const Token& at, TokKind kind, std::string text) {
@@ -135,8 +146,11 @@ std::vector<Token> clean(const std::vector<Token>& in, TexRow& row, bool& starts
   starts_continued = false;
   bool pending_space = false;
   int depth = 0;  // braces: prose in \text{..} is a separator only outside groups
+  std::vector<char> drop(in.size(), 0);
   for (std::size_t i = 0; i + 1 < in.size(); ++i) {
     const Token& t = in[i];
+    if (drop[i] == 1) continue;
+    if (drop[i] == 2) out.push_back(t);  // the extra '}' of a font switch
     if (t.is('{')) ++depth;
     if (t.is('}')) --depth;
     if (first && (t.is('&') || t.is_cs("quad") || t.is_cs("qquad"))) starts_continued = true;
@@ -148,13 +162,28 @@ std::vector<Token> clean(const std::vector<Token>& in, TexRow& row, bool& starts
       const char* to = nullptr;
       for (const auto& [from, mapped] : kSwitch)
         if (in[i + 1].text == from) to = mapped;
-      if (to) {
+      if (to) {  // {\rm tot} -> {\mathrm{tot}}: the outer group stays (v_{\rm tot})
+        int d = 0;
+        std::size_t c = i;
+        for (; c + 1 < in.size(); ++c) {
+          if (in[c].is('{')) ++d;
+          if (in[c].is('}') && --d == 0) break;
+        }
+        if (c + 1 < in.size()) drop[c] = 2;
+        out.push_back(t);
         out.push_back(with(t, TokKind::Cs, to));
         out.push_back(t);
         ++i;
         first = false;
         continue;
       }
+    }
+    if (t.kind == TokKind::Cs && !cleaned_cs(t.text) && !is_size_cs(t.text) && !is_ignored_cs(t.text)) {
+      out.push_back(t);  // the common case (\frac, \theta, \mathbf, ...): nothing to clean
+      if (pending_space) out.back().space_before = true;
+      pending_space = false;
+      first = false;
+      continue;
     }
     if (t.kind == TokKind::Cs && rewrite_physics(in, i, out)) {
       first = false;
@@ -189,6 +218,28 @@ std::vector<Token> clean(const std::vector<Token>& in, TexRow& row, bool& starts
         if (!plain_group(in, j, close, s)) continue;
         if (c == "hspace" || c == "intertext" || c == "shortintertext") out.push_back(quad_at(t));
         i = close;
+        continue;
+      }
+      if (c == "boxed") {  // \boxed{v = \sqrt{2gh}}: the box only typesets
+        std::size_t close = 0;
+        std::string s;
+        if (plain_group(in, i + 1, close, s)) {
+          drop[close] = 1;  // the group's braces go, its inside is cleaned as the rest
+          ++i;
+          continue;
+        }
+      }
+      if (c == "\\" && i + 2 < in.size() && !in[i + 1].space_before &&
+          (in[i + 1].is('!') || in[i + 1].is(',') || in[i + 1].is(';') || in[i + 1].is(':'))) {
+        ++i;  // \\! in Markdown sources: an escaped \! (spacing)
+        pending_space = true;
+        continue;
+      }
+      if (c == "\\" && i + 1 < in.size() && in[i + 1].is('[')) {  // \\[2pt]
+        std::size_t k = i + 1;
+        while (k + 1 < in.size() && !in[k].is(']')) ++k;
+        out.push_back(quad_at(t));
+        i = k;
         continue;
       }
       if (c == "hfill" || c == "qquad" || c == "quad" || c == "\\" || c == "enspace" || c == "hskip") {
@@ -258,6 +309,10 @@ std::vector<Token> clean(const std::vector<Token>& in, TexRow& row, bool& starts
       }
     }
     if (t.is(':') && i + 1 < in.size() && in[i + 1].is('=')) continue;  // a := b
+    if (t.is('{') && i + 2 < in.size() && in[i + 1].is('}')) {  // {} typesets nothing
+      ++i;
+      continue;
+    }
     out.push_back(t);
     if (pending_space) out.back().space_before = true;
     pending_space = false;

@@ -127,6 +127,7 @@ class Parser {
   std::string last_int_var_;    // the variable of the row's last integral (for [F]_a^b)
   std::map<std::string, std::string> subst_;   // a finite sum's index -> its current value
   std::string unit_;            // the unit written after a number on the current side
+  std::size_t unit_end_ = 0;    // the token after that unit's group
 };
 
 }  // namespace dc::tex
