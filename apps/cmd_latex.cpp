@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "apps/budget_flags.hpp"
+#include "apps/checked_files.hpp"
 #include "apps/commands.hpp"
 #include "derivations/reader/derivation.hpp"
 #include "derivations/syntax/io.hpp"
@@ -35,16 +36,9 @@ int run(const LatexCliOptions& o) {
   if (!to_stdout) refuse_output_over_inputs(o.output, files);   // before any work
   // Every step is checked (as `check` does, under the budgets): a handout with a step that does
   // not hold is not emitted unless --allow-unchecked, and then that step is marked in it.
-  exec::RunOptions run = o.budget.resolve();
-  run.read_once = true;   // each file read once (read_once.hpp)
-  std::vector<FileReport> reports = exec::check_files(files, run);
-  std::vector<const Derivation*> ptrs;
-  std::vector<const CheckSummary*> checks;
+  const CheckedFiles checked = check_for_document(files, o.budget);
   std::vector<std::string> unchecked;
-  for (const auto& r : reports) {
-    if (r.input_error) throw *r.input_error;
-    ptrs.push_back(&*r.derivation);
-    checks.push_back(&r.summary);
+  for (const auto& r : checked.reports) {
     for (const auto& res : r.summary.results)
       if (!step_checked_ok(res))
         unchecked.push_back(step_position(*r.derivation, *res.step) + ": step '" + res.step->label + "' " +
@@ -64,9 +58,9 @@ int run(const LatexCliOptions& o) {
   lo.units = o.units;
   lo.title = o.title;
   lo.subtitle = o.subtitle;
-  lo.checks = &checks;
+  lo.checks = &checked.checks;
   lo.mark_unchecked = o.allow_unchecked;
-  std::string tex = write_latex(ptrs, lo);
+  std::string tex = write_latex(checked.derivations, lo);
   if (to_stdout) {
     std::cout << tex;
     return kExitOk;

@@ -84,6 +84,36 @@ double latex_width(const Node& n);
 // Would latex_relation print this chain as an aligned block in the document?
 bool latex_prefers_aligned(const Relation& r, const SymbolTable& table);
 
+// ---- Pieces of the handout every output shares (latex_document.cpp): `derivcheck html`
+// puts the same TeX on its web page, so the page and the PDF cannot drift apart.
+
+// The width of a display line in latex_width units: a standalone document (11pt on 160 mm)
+// and a fragment in a plain article (10pt on 345 pt); measured with the overfull-box test.
+constexpr double kLatexLineLimit = 58;
+constexpr double kLatexFragmentLineLimit = 44;
+
+// A file's section heading: "9.3.1" and "Direct central impact" (the number is empty when the
+// title is numbered itself, "Example 9.4 ...", or the file gives no section).
+struct HandoutHeading {
+  std::string number, title;
+};
+HandoutHeading handout_heading(const Derivation& d);
+// The document's title: `requested` (--title), else the first `handout "..."` line, else a lone
+// file's title, else "Derivations".
+std::string handout_title(const std::vector<const Derivation*>& ds, const std::string& requested);
+LatexStyle latex_style_of(const Derivation& d);
+// Is the step one of the handout's equations (not `hide`, not a stable form)?
+bool step_in_handout(const Step& s);
+// The rows of one step's equation as the handout displays it, no tag: the claim (the corrected
+// one for an erratum, a limit step's first side as the limit it means, an order term where it
+// was written) in latex_rows within `limit`, and what it holds under (as $x \to p$, to first
+// order in ...) beside the last row.
+std::vector<std::string> latex_step_rows(const Derivation& d, const Step& s, double limit);
+// An erratum's claim as the source prints it (the footnote's "the source prints ...").
+std::string latex_erratum_printed(const Derivation& d, const Step& s);
+// The TeX of a $...$ piece (as written) or an `expr` piece (latex_inline_expression) of prose.
+std::string latex_prose_math(const ProsePiece& p, const SymbolTable& table, const LatexStyle& style);
+
 // Plain text for LaTeX: escapes \ { } $ & # ^ _ % ~; pairs ASCII quotes ("a" -> ``a'', 'a' ->
 // `a', an apostrophe stays '); maps the Unicode a lecturer types (section sign \S, Greek
 // letters, micro sign, degree, dashes, typographic quotes, primes, arrows, relations,

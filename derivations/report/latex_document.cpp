@@ -101,13 +101,8 @@ std::string prose_tex(const std::vector<ProsePiece>& pieces, const SymbolTable& 
       case ProsePiece::Kind::Emph:
         out += "\\emph{" + (p.inner.empty() ? latex_escape_text(p.text) : prose_tex(p.inner, table, style)) + "}";
         break;
-      case ProsePiece::Kind::Math: out += "$" + p.text + "$"; break;
-      case ProsePiece::Kind::Expr: {
-        out += "$" + latex_inline_expression(p.expr, table, style);
-        for (const auto& side : p.more) out += " = " + latex_inline_expression(side, table, style);
-        out += "$";
-        break;
-      }
+      case ProsePiece::Kind::Math:
+      case ProsePiece::Kind::Expr: out += "$" + latex_prose_math(p, table, style) + "$"; break;
     }
   }
   return out;
@@ -120,11 +115,9 @@ class DocumentWriter {
   std::string section(const Derivation& d, const CheckSummary* checks) {
     std::string out;
     file_ = basename_of(d.source.name);
-    std::string heading = d.title.empty() ? file_ : d.title;
-    bool numbered_title = !heading.empty() && (std::isdigit(static_cast<unsigned char>(heading[0])) ||
-                                               heading.rfind("Example", 0) == 0);
-    std::string shown = latex_escape_text(heading);
-    if (!d.section.empty() && !numbered_title) shown = latex_escape_text(d.section) + "\\quad " + shown;
+    const HandoutHeading heading = handout_heading(d);
+    std::string shown = latex_escape_text(heading.title);
+    if (!heading.number.empty()) shown = latex_escape_text(heading.number) + "\\quad " + shown;
     out += "% ---- " + file_ + "\n";
     out += "\\section*{" + shown + "}\n";
     out += "\\addcontentsline{toc}{section}{" + shown + "}\n\n";
@@ -147,7 +140,7 @@ class DocumentWriter {
       const StepResult* r = checks && i < checks->results.size() ? &checks->results[i] : nullptr;
       // Stable rewrites (for computing) and hidden helper steps are not handout equations;
       // --annotate shows them with the rest.
-      if ((s.stable_of || s.hidden) && !opt_.annotate) continue;
+      if (!step_in_handout(s) && !opt_.annotate) continue;
       bool unchecked = opt_.mark_unchecked && r && !step_checked_ok(*r);
       if (opt_.annotate || s.erratum) {
         flush();
@@ -290,23 +283,28 @@ class DocumentWriter {
   }
   static std::string fragment_footer() { return "\\endgroup\n"; }
 
+  // The rows of a step's equation (latex_step_rows).
+  static std::vector<std::string> step_rows(const Derivation& d, const Step& s, double limit) {
+    const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
+    const std::string cond = s.erratum ? std::string() : condition(d, s);
+    std::vector<std::string> rs = latex_rows(claim, d.symbols, limit - (cond.empty() ? 0 : 18), style_of(d));
+    if (!cond.empty()) rs.back() += cond;
+    return rs;
+  }
+
  private:
   const LatexOptions& opt_;
   std::string file_;
 
   // Width of a display line in latex_width units: 11pt on 160 mm (standalone), 10pt on
   // 345 pt (a plain article hosting the fragment). Measured with the overfull-box test.
-  double line_limit() const { return opt_.fragment ? 44 : 58; }
+  double line_limit() const { return opt_.fragment ? kLatexFragmentLineLimit : kLatexLineLimit; }
 
   std::string comment(const Step& s) const {
     return "% " + s.label + " (" + file_ + ":" + std::to_string(s.pos.line) + ")\n";
   }
 
-  static LatexStyle style_of(const Derivation& d) {
-    LatexStyle st;
-    st.dot_derivatives = d.dot_derivatives;
-    return st;
-  }
+  static LatexStyle style_of(const Derivation& d) { return latex_style_of(d); }
 
   std::string prose(const Prose& p, const SymbolTable& table, const LatexStyle& style) {
     switch (p.kind) {
@@ -357,10 +355,7 @@ class DocumentWriter {
 
   // The rows of a step in an align (tag on its last row).
   std::string rows(const Derivation& d, const Step& s, const std::string& last_extra = {}) {
-    const Relation claim = displayed_claim(s, s.erratum ? s.erratum->corrected : s.claim);
-    const std::string cond = s.erratum ? std::string() : condition(d, s);
-    std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - (cond.empty() ? 0 : 18), style_of(d));
-    if (!cond.empty()) rs.back() += cond;
+    const std::vector<std::string> rs = step_rows(d, s, line_limit());
     std::string out;
     for (std::size_t i = 0; i < rs.size(); ++i) {
       bool last = i + 1 == rs.size();
@@ -396,19 +391,14 @@ class DocumentWriter {
     std::string out = comment(s);
     if (s.erratum) {
       // equation + aligned: the footnote mark is typeset once
-      const Relation claim = displayed_claim(s, s.erratum->corrected);
-      std::vector<std::string> rs = latex_rows(claim, d.symbols, line_limit() - 12, style_of(d));
+      std::vector<std::string> rs = step_rows(d, s, line_limit() - 12);
       out += s.tag.empty() ? "\\begin{equation*}\n" : "\\begin{equation}\n";
       out += "\\begin{aligned}\n";
       for (std::size_t i = 0; i < rs.size(); ++i) out += rs[i] + (i + 1 < rs.size() ? " \\\\\n" : "\n");
       out += "\\end{aligned}" + extra;
       if (!s.tag.empty()) out += "\n\\tag{" + latex_escape_text(s.tag) + "}";
       out += s.tag.empty() ? "\n\\end{equation*}\n" : "\n\\end{equation}\n";
-      Relation printed = s.claim;
-      std::string text;
-      for (std::size_t i = 0; i < printed.sides.size(); ++i)
-        text += (i ? " = " : "") + latex_expression(printed.sides[i], d.symbols, style_of(d));
-      out += "\\footnotetext{Corrected: the source prints $" + text + "$; " + latex_escape_text(s.erratum->why) +
+      out += "\\footnotetext{Corrected: the source prints $" + latex_erratum_printed(d, s) + "$; " + latex_escape_text(s.erratum->why) +
              ".}\n";
     } else {
       out += "\\begin{align}\n" + rows(d, s, extra) + "\n\\end{align}\n";
@@ -437,6 +427,50 @@ bool step_checked_ok(const StepResult& r) {
   return own == 0 && r.verdict.holds();
 }
 
+std::string latex_prose_math(const ProsePiece& p, const SymbolTable& table, const LatexStyle& style) {
+  if (p.kind == ProsePiece::Kind::Math) return p.text;
+  std::string out = latex_inline_expression(p.expr, table, style);
+  for (const auto& side : p.more) out += " = " + latex_inline_expression(side, table, style);
+  return out;
+}
+
+HandoutHeading handout_heading(const Derivation& d) {
+  HandoutHeading h;
+  h.title = d.title.empty() ? basename_of(d.source.name) : d.title;
+  const bool numbered_title = !h.title.empty() && (std::isdigit(static_cast<unsigned char>(h.title[0])) ||
+                                                   h.title.rfind("Example", 0) == 0);
+  if (!numbered_title) h.number = d.section;
+  return h;
+}
+
+std::string handout_title(const std::vector<const Derivation*>& ds, const std::string& requested) {
+  // --title, else the first file's `handout "..."` line, else a lone file's title
+  std::string title = requested;
+  for (const Derivation* d : ds)
+    if (title.empty()) title = d->handout;
+  if (title.empty()) title = ds.size() == 1 ? ds[0]->title : "Derivations";
+  return title;
+}
+
+LatexStyle latex_style_of(const Derivation& d) {
+  LatexStyle st;
+  st.dot_derivatives = d.dot_derivatives;
+  return st;
+}
+
+bool step_in_handout(const Step& s) { return !s.stable_of && !s.hidden; }
+
+std::vector<std::string> latex_step_rows(const Derivation& d, const Step& s, double limit) {
+  return DocumentWriter::step_rows(d, s, limit);
+}
+
+std::string latex_erratum_printed(const Derivation& d, const Step& s) {
+  std::string text;
+  for (std::size_t i = 0; i < s.claim.sides.size(); ++i)
+    text += (i ? " = " : "") + latex_expression(s.claim.sides[i], d.symbols, latex_style_of(d));
+  return text;
+}
+
 std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOptions& opt) {
   DocumentWriter w(opt);
   std::vector<const CheckSummary*> checks(ds.size(), nullptr);
@@ -449,12 +483,7 @@ std::string write_latex(const std::vector<const Derivation*>& ds, const LatexOpt
   if (opt.fragment) {
     out += w.fragment_header();
   } else {
-    // --title, else the first file's `handout "..."` line, else a lone file's title
-    std::string title = opt.title;
-    for (const Derivation* d : ds)
-      if (title.empty()) title = d->handout;
-    if (title.empty()) title = ds.size() == 1 ? ds[0]->title : "Derivations";
-    out += w.preamble(title);
+    out += w.preamble(handout_title(ds, opt.title));
   }
   for (std::size_t i = 0; i < ds.size(); ++i) out += w.section(*ds[i], checks[i]);
   out += opt.fragment ? w.fragment_footer() : "\\end{document}\n";

@@ -181,20 +181,67 @@ Totals totals(const std::vector<FileReport>& files) {
 
 // The rule of a step as the report names it: the rule the author wrote, or for a document step
 // the justification the search found ("follows from (9.6), L120", "identity", "given").
-std::string rule_text(const Derivation& d, const Step& s, const StepResult& r) {
+std::string rule_text(const Derivation* d, const Step& s, const StepResult& r) {
   if (!s.document_row) return s.rule.written_name;
   if (r.found_rule.empty()) return "(no justification found)";
   if (r.found_rows.empty()) return r.found_rule;
   std::string rows;
   std::vector<std::string> named;
   for (const auto& label : r.found_rows) {
-    const Step* st = d.find(label);
+    const Step* st = d ? d->find(label) : nullptr;
     const std::string name = st && !st->tag.empty() ? "(" + st->tag + ")" : label;
     if (std::find(named.begin(), named.end(), name) != named.end()) continue;   // links of one tagged row
     named.push_back(name);
     rows += (rows.empty() ? "" : ", ") + name;
   }
   return (r.verdict.kind == VerdictKind::Refuted ? "against " : "follows from ") + rows;
+}
+
+std::string summary_text(const Totals& t, const ReportOptions& opt) {
+  std::string out = std::to_string(t.steps) + " steps: " + std::to_string(t.premises) + " premises, " +
+                    std::to_string(t.proved) + " proved, " + std::to_string(t.holds_numerically) +
+                    " hold numerically, " + std::to_string(t.refuted) + " refuted, " + std::to_string(t.undecided) +
+                    " undecided, " + std::to_string(t.errors) + " errors (" + std::to_string(t.errata) +
+                    " errata reported)";
+  if (t.input_errors > 0)
+    out += "; " + std::to_string(t.input_errors) + (t.input_errors == 1 ? " file" : " files") + " with input errors";
+  if (opt.timings) out += " [" + seconds_text(t.seconds) + "]";
+  return out;
+}
+
+std::string format_step_text(const Step& s, const StepResult& r, const ReportOptions& opt, const Derivation* d) {
+  std::string out;
+  std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
+  bool ok = own == 0 && r.verdict.holds();
+  if (opt.quiet && ok && !r.erratum_reported && s.diagnostics.empty()) return {};
+  std::string line = pos_text(s.pos) + ": " + mark(r) + " " + s.label;
+  if (!s.tag.empty()) line += " (" + s.tag + ")";
+  // A step whose own error stopped its rule is "not checked" (the error follows), never ✗
+  // beside "undecided".
+  line += " " + rule_text(d, s, r) + " \u2014 " +
+          (r.premise && r.verdict.holds() && s.document_row ? "given: " + r.verdict.detail
+           : r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
+           : own > 0 && r.verdict.kind == VerdictKind::Undecided ? std::string("not checked")
+                                                                 : verdict_phrase(r.verdict));
+  if (own > 0) line += "; " + std::to_string(own) + (own == 1 ? " error" : " errors");
+  if (r.erratum_reported) line += "; erratum reported";
+  if (opt.timings) line += " [" + seconds_text(r.seconds) + "]";
+  out += line + "\n";
+  out += verdict_evidence(r.verdict, "    ");
+  if (!ok && !r.derived.empty()) out += "    derived: " + r.derived + "\n";
+  if (!opt.quiet) {
+    if (introduces_name(s))
+      out += "    introduces: " + to_text(s.claim.sides[0]) + " = " + to_text(s.claim.sides[1]) +
+             ", for the steps after it\n";
+    for (const auto& sc : r.verdict.side_conditions)
+      if (sc.status != SideCondition::Status::Guaranteed)
+        out += "    side condition: " + sc.what + " (" + sc.reason + ") " + side_condition_status(sc.status) +
+               (sc.evidence.empty() ? "" : ": " + sc.evidence) + "\n";
+    for (const auto& n : s.notes) out += "    note: " + n + "\n";
+  }
+  for (const auto& e : r.errors) out += e.format();
+  for (const auto& w : s.diagnostics) out += w.format();
+  return out;
 }
 
 std::string format_text(const std::vector<FileReport>& files, const ReportOptions& opt) {
@@ -206,52 +253,10 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
     }
     const Derivation& d = *f.derivation;
     for (const auto& w : d.diagnostics) out += w.format();
-    for (std::size_t i = 0; i < f.summary.results.size(); ++i) {
-      const StepResult& r = f.summary.results[i];
-      const Step& s = d.steps[i];
-      std::size_t own = r.errors.size() - (r.erratum_reported ? 1 : 0);
-      bool ok = own == 0 && r.verdict.holds();
-      if (opt.quiet && ok && !r.erratum_reported && s.diagnostics.empty()) continue;
-      std::string line = pos_text(s.pos) + ": " + mark(r) + " " + s.label;
-      if (!s.tag.empty()) line += " (" + s.tag + ")";
-      // A step whose own error stopped its rule is "not checked" (the error follows), never ✗
-      // beside "undecided".
-      line += " " + rule_text(d, s, r) + " \u2014 " +
-              (r.premise && r.verdict.holds() && s.document_row ? "given: " + r.verdict.detail
-               : r.premise && r.verdict.holds() ? std::string("premise (symbols and dimensions checked)")
-               : own > 0 && r.verdict.kind == VerdictKind::Undecided ? std::string("not checked")
-                                                                     : verdict_phrase(r.verdict));
-      if (own > 0) line += "; " + std::to_string(own) + (own == 1 ? " error" : " errors");
-      if (r.erratum_reported) line += "; erratum reported";
-      if (opt.timings) line += " [" + seconds_text(r.seconds) + "]";
-      out += line + "\n";
-      out += verdict_evidence(r.verdict, "    ");
-      if (!ok && !r.derived.empty()) out += "    derived: " + r.derived + "\n";
-      if (!opt.quiet) {
-        if (introduces_name(s))
-          out += "    introduces: " + to_text(s.claim.sides[0]) + " = " + to_text(s.claim.sides[1]) +
-                 ", for the steps after it\n";
-        for (const auto& sc : r.verdict.side_conditions)
-          if (sc.status != SideCondition::Status::Guaranteed)
-            out += "    side condition: " + sc.what + " (" + sc.reason + ") " + side_condition_status(sc.status) +
-                   (sc.evidence.empty() ? "" : ": " + sc.evidence) + "\n";
-        for (const auto& n : s.notes) out += "    note: " + n + "\n";
-      }
-      for (const auto& e : r.errors) out += e.format();
-      for (const auto& w : s.diagnostics) out += w.format();
-    }
+    for (std::size_t i = 0; i < f.summary.results.size(); ++i)
+      out += format_step_text(d.steps[i], f.summary.results[i], opt, &d);
   }
-  Totals t = totals(files);
-  out += std::to_string(t.steps) + " steps: " + std::to_string(t.premises) + " premises, " +
-         std::to_string(t.proved) + " proved, " +
-         std::to_string(t.holds_numerically) + " hold numerically, " + std::to_string(t.refuted) + " refuted, " +
-         std::to_string(t.undecided) + " undecided, " + std::to_string(t.errors) + " errors (" +
-         std::to_string(t.errata) + " errata reported)";
-  if (t.input_errors > 0)
-    out += "; " + std::to_string(t.input_errors) + (t.input_errors == 1 ? " file" : " files") + " with input errors";
-  if (opt.timings) out += " [" + seconds_text(t.seconds) + "]";
-  out += "\n";
-  return out;
+  return out + summary_text(totals(files), opt) + "\n";
 }
 
 nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const ReportOptions& opt) {

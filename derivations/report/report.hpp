@@ -43,6 +43,13 @@ struct Totals {
 Totals totals(const std::vector<FileReport>& files);
 
 std::string format_text(const std::vector<FileReport>& files, const ReportOptions& opt);
+// What format_text prints for one step: its line, the evidence, side conditions that are not
+// guaranteed, notes, errors ("" for a step that holds under `quiet`). `d`, when given, names a
+// document step's justification rows by their tags.
+std::string format_step_text(const Step& s, const StepResult& r, const ReportOptions& opt,
+                             const Derivation* d = nullptr);
+// The summary line format_text ends with ("64 steps: 12 premises, ..."), without the newline.
+std::string summary_text(const Totals& t, const ReportOptions& opt);
 nlohmann::ordered_json to_json(const std::vector<FileReport>& files, const ReportOptions& opt);
 // The verdict alone as JSON (used by `equal` and `claims` too).
 nlohmann::ordered_json verdict_json(const Verdict& v);
