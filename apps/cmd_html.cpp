@@ -31,6 +31,12 @@ int run(const HtmlCliOptions& o) {
   check_html_site_target(o.output);   // before any work: a folder html did not write is refused
   const CheckedFiles checked = check_for_document(files, o.budget);
   const Totals t = totals(checked.reports);
+  if (t.input_errors > 0) {   // a step whose references contradict each other: bad input, nothing written
+    ReportOptions quiet;
+    quiet.quiet = true;
+    std::cerr << format_text(checked.reports, quiet);
+    return kExitInputError;
+  }
   HtmlOptions ho;
   ho.title = o.title;
   ho.subtitle = o.subtitle;

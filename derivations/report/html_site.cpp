@@ -110,7 +110,10 @@ void write_html_site(const std::string& dir, const std::string& index_html, cons
   if (target.filename().empty()) target = target.parent_path();   // "site/"
   fs::path parent = target.parent_path();
   if (parent.empty()) parent = ".";
-  std::string tmpl = (parent / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
+  std::string name = ".";   // (not "." + string: GCC 12 warns a false -Wrestrict on it)
+  name += target.filename().string();
+  name += ".tmp-XXXXXX";
+  const std::string tmpl = (parent / name).string();
   std::vector<char> buf(tmpl.begin(), tmpl.end());
   buf.push_back('\0');
   if (::mkdtemp(buf.data()) == nullptr)

@@ -125,6 +125,27 @@ TEST_CASE("every kind of mark, and the page checker catches a broken page", "[ht
   }
 }
 
+TEST_CASE("the typesetting fixture and the textbook derivations render with no console message", "[html][browser]") {
+  require_chromium();
+  TempDir t("typesetting");
+  const fs::path site = t.path / "site";
+  const std::vector<std::string> inputs = {src("tests/data/latex/typesetting.dc"), src("derivations/textbook/")};
+  std::vector<std::string> args = {"check", "--json"};
+  args.insert(args.end(), inputs.begin(), inputs.end());
+  const auto expected = html_test::checked_steps(run(args).out);
+  args = {"html"};
+  args.insert(args.end(), inputs.begin(), inputs.end());
+  args.insert(args.end(), {"-o", site.string()});
+  REQUIRE(run(args).exit_code == 0);
+  const html_test::Loaded page = html_test::load_in_chromium(fs::absolute(site / "index.html").string());
+  const auto problems = html_test::page_problems(page, expected);
+  CAPTURE(problems);
+  CHECK(problems.empty());
+  const auto steps = html_test::page_steps(page.dom);
+  CHECK(std::all_of(steps.begin(), steps.end(), [](const auto& s) { return s.rendered; }));
+  CHECK(steps.size() > 100);
+}
+
 TEST_CASE("byte-identical sites across runs and --jobs", "[html]") {
   TempDir t("determinism");
   const cli_test::Run a = run({"html", src("derivations/handout9/"), "-o", (t.path / "a").string(), "--jobs", "1"});
@@ -148,6 +169,15 @@ TEST_CASE("bad input is a positioned error and writes nothing", "[html]") {
   const cli_test::Run r = run({"html", bad.string(), "-o", site.string()});
   CHECK(r.exit_code == 2);
   CHECK(r.err.find(bad.string() + ":2:8: error:") != std::string::npos);
+  CHECK_FALSE(fs::exists(site));
+  // references that contradict each other are bad input too (check's exit 2): no site either
+  const fs::path contra = t.path / "contra.dc";
+  std::ofstream(contra) << "symbol a, x : real [1]\na1: a = 1\n    by given\na2: a = 2\n    by given\n"
+                           "bad: x = 5\n    by rewrite a1, a2\n";
+  const cli_test::Run c = run({"html", contra.string(), "-o", site.string()});
+  CHECK(c.exit_code == 2);
+  CHECK(c.err.find(contra.string() + ":7:") != std::string::npos);
+  CHECK(c.err.find("contradict each other") != std::string::npos);
   CHECK_FALSE(fs::exists(site));
   // no temporary folder is left beside it either
   for (const auto& e : fs::directory_iterator(t.path)) CHECK(e.path().filename().string().rfind(".site", 0) != 0);
