@@ -52,7 +52,7 @@ header h1 { font-size: 1.8rem; line-height: 1.25; margin: .4rem 0 .2rem; }
 header p { margin: .2rem 0; }
 .subtitle { color: var(--muted); }
 .summary, .legend { font: .85rem/1.5 "DejaVu Sans", system-ui, sans-serif; color: var(--muted); }
-.legend .mark { margin: 0 .15em; }
+.legend .mark { margin: 0 .3em 0 .6em; }
 h2 { font-size: 1.35rem; margin: 2.4rem 0 .6rem; border-bottom: 1px solid var(--rule); padding-bottom: .2rem; }
 h2 .number { color: var(--muted); margin-right: .6em; }
 h3 { font-size: 1.1rem; margin: 1.6rem 0 .4rem; }
