@@ -28,7 +28,8 @@ struct HtmlCliOptions {
 
 int run(const HtmlCliOptions& o) {
   const std::vector<std::string> files = dc::derivation_files(o.inputs);
-  check_html_site_target(o.output);   // before any work: a folder html did not write is refused
+  check_html_site_target(o.output);   // before any work: a folder html did not write is refused,
+  check_html_katex(o.katex);          // and so is a missing KaTeX
   const CheckedFiles checked = check_for_document(files, o.budget);
   const Totals t = totals(checked.reports);
   if (t.input_errors > 0) {   // a step whose references contradict each other: bad input, nothing written

@@ -48,8 +48,10 @@ VerdictMark verdict_mark(const StepResult& r);
 // it but index.html with kHtmlGeneratorLine and katex/); anything else is refused with an
 // InputError at `dir`, as is a missing KaTeX.
 void write_html_site(const std::string& dir, const std::string& index_html, const std::string& katex_dir);
-// The refusal alone (write_html_site calls it), to fail before the files are checked.
+// The refusal alone, and the KaTeX check alone (write_html_site does both), to fail before the
+// files are checked.
 void check_html_site_target(const std::string& dir);
+void check_html_katex(const std::string& katex_dir);
 
 // Text for HTML element content and attribute values: & < > " escaped.
 std::string html_escape(std::string_view text);

@@ -103,6 +103,8 @@ void check_html_site_target(const std::string& dir) {
                         "', which derivcheck html did not write; name a new or empty folder, or a site html wrote");
 }
 
+void check_html_katex(const std::string& katex_dir) { katex_files(katex_dir); }
+
 void write_html_site(const std::string& dir, const std::string& index_html, const std::string& katex_dir) {
   check_html_site_target(dir);
   const std::vector<std::string> files = katex_files(katex_dir);
