@@ -49,7 +49,9 @@
 // \left[F\right]_a^b, \Big[F\Big]_a^b, \left.F\right|_a^b -> eval_between(F, x, a, b), x being the
 // variable written in the lower end ([F]_{x=a}^{b}) or else that of the row's last integral.
 // \dot{x} and \ddot{x} are names (see above); whether they mean derivatives is the reader's
-// decision.
+// decision. The ambiguous letters are reported as TexReadings: e^{..} read as exp (or, with
+// e_numeric_power_is_symbol, e^2 as the symbol's power), e alone read as a symbol, d alone read
+// as a symbol (a distance), v(t) read as a product, a/bc read as a/(b*c).
 // Not read yet (a positioned InputError saying "... is not read yet", never a silent guess): \pm
 // and \mp, sums and products with symbolic bounds or none (\sum_i^n, \sum F, \Sigma F),
 // indefinite and multiple integrals, a differential dx outside a derivative or an integral

@@ -165,6 +165,14 @@ TEST_CASE("tex: e is Euler's number or a symbol", "[tex]") {
   CHECK(expr("\\frac{1 - e^2}{2}", both) == "(1 - e^2)/2");
   CHECK(expr("e^{-t/\\tau}", both) == "exp(-t/tau)");
   CHECK(parse_tex_row("1 - e^{2}", kOrigin, both).readings.size() == 1);
+  // e and d alone: read as symbols, and said so
+  TexRow r2 = parse_tex_row("e = \\frac{v'_2 - v'_1}{v_1 - v_2}, \\quad W = F d", kOrigin, {});
+  REQUIRE(r2.readings.size() == 2);
+  CHECK(r2.readings[0].message == "e without an exponent read as a symbol e, not Euler's number");
+  CHECK(r2.readings[0].pos.col == 1);
+  CHECK(r2.readings[1].message == "d read as a symbol (a distance), not a differential");
+  CHECK(r2.readings[1].pos.col == 48);
+  CHECK(parse_tex_row("e = 1", kOrigin, sym).readings.empty());
 }
 
 TEST_CASE("tex: degrees and constants", "[tex]") {
@@ -408,6 +416,10 @@ TEST_CASE("tex: errors at exact positions", "[tex]") {
   CHECK(error_of("x = \\begin{pmatrix} 1 \\end{pmatrix}").message().find("not read yet") != std::string::npos);
   CHECK(error_of("x = a + \\cdots").message().find("not read yet") != std::string::npos);
   CHECK(error_of("n!").message() == "a factorial is not read yet");
+  InputError sep = error_of("N = 10\\,000");
+  CHECK(sep.message().find("two numbers side by side") == 0);
+  CHECK(where(sep) == "1:9");
+  CHECK(text("x = 2 \\cdot 3 = 2(3)") == "x = 2*3 = 2*(3)");
   CHECK(error_of("m_2 \\gg m_1").message() == "the relation \\gg is not read yet");
   CHECK(error_of("F \\propto x").message() == "the relation \\propto is not read yet");
   InputError cross = error_of("\\mathbf{L} = \\mathbf{r} \\times \\mathbf{p}");

@@ -372,6 +372,11 @@ Parsed Parser::name() {
     }
     return apply_script(std::move(p), std::move(*expo), *expo_tok);
   }
+  // the two letters the issue names as ambiguous: say how they were read
+  if (p.node.kind == NodeKind::Symbol && parts.plain_e && id == "e" && ctx_.e_is_euler)
+    row_.readings.push_back({at(first), 1, "e without an exponent read as a symbol e, not Euler's number"});
+  if (p.node.kind == NodeKind::Symbol && id == "d" && parts.subs.empty())
+    row_.readings.push_back({at(first), 1, "d read as a symbol (a distance), not a differential"});
   return p;
 }
 
@@ -624,6 +629,11 @@ Parsed Parser::term(bool operand) {
       if (nest_ > 0) fail(t, "a number with a unit inside an expression is not read yet (only a side that is a number and its unit)");
       take_unit();
       continue;
+    }
+    {
+      const Node& prev = left.node.kind == NodeKind::Mul && !left.node.parenthesized ? left.node.args[1] : left.node;
+      if (is_digit_tok(t) && prev.kind == NodeKind::Number && !prev.parenthesized)
+        fail(t, "two numbers side by side (a thousands separator, 10\\,000?) are not read yet: write one number");
     }
     Parsed right = factor();
     const Node& last = left.node.kind == NodeKind::Mul && !left.node.parenthesized ? left.node.args[1] : left.node;
