@@ -17,6 +17,8 @@
 #include <functional>
 
 #include "derivations/reader/internal/dc_reader.hpp"
+#include "derivations/reader/figures.hpp"
+#include "derivations/syntax/figure.hpp"
 #include "derivations/syntax/io.hpp"
 #include "derivations/syntax/prose.hpp"
 
@@ -221,7 +223,18 @@ void DcReader::prose_statement(const std::string& w, const Span& s, const Source
     std::size_t p = 0;
     std::string str = string_literal(s, p, "a quoted " + std::string(w == "heading" ? "heading" : "caption") +
                                                ", e.g. " + w + " \"...\"");
-    expect_end(s, p);
+    if (w == "heading") {
+      expect_end(s, p);
+    } else {
+      // what draws the figure: `simulate SCENE ...` or `plot LABEL ... over X = LO .. HI ...`
+      Span rest = s.sub(p, s.text.size());
+      FigureSpec spec = parse_figure_spec({rest.text, rest.pos, rest.end},
+                                          [&](const SourcePos& q, const std::string& msg, int len) { fail(q, msg, len); });
+      for (const auto& c : spec.curves)   // a step later in the file may be drawn earlier
+        if (!all_labels_.count(c.name))
+          fail(c.pos, "no step labelled '" + c.name + "' in this file to plot", static_cast<int>(c.name.size()));
+      if (spec.kind != FigureSpec::Kind::Placeholder) figures_[d_.prose.size()] = std::move(spec);
+    }
     if (str.find_first_not_of(' ') == std::string::npos) fail(s.at(0), "empty " + w + ": write its text between the quotes");
     if (pr.kind == Prose::Kind::Figure) {
       // a caption takes the markup of text ($r^2$, `m*g`, *words*); positions from the opening quote
@@ -631,6 +644,12 @@ std::vector<Formula> formulas(const Derivation& d) {
   for (const auto& s : d.steps)
     if (auto f = formula_of(d, s, nullptr)) out.push_back(std::move(*f));
   return out;
+}
+
+std::map<std::size_t, FigureSpec> figure_specs(const Derivation& d) {
+  reader_detail::DcReader r(d.source);
+  r.run();
+  return r.figures();
 }
 
 }  // namespace dc

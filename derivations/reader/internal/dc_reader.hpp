@@ -20,6 +20,7 @@
 
 #include "derivations/reader/derivation.hpp"
 #include "derivations/syntax/expr.hpp"
+#include "derivations/syntax/figure.hpp"
 #include "derivations/syntax/source.hpp"
 
 namespace dc::reader_detail {
@@ -107,9 +108,12 @@ class DcReader {
   explicit DcReader(SourceText src) { d_.source = std::move(src); }
 
   Derivation run();
+  // After run(): what draws each figure that names it, by its index in Derivation::prose.
+  const std::map<std::size_t, FigureSpec>& figures() const { return figures_; }
 
  private:
   Derivation d_;
+  std::map<std::size_t, FigureSpec> figures_;
   std::vector<std::string> lines_;              // comment-blanked
   std::vector<Statement> statements_;
   std::map<std::string, SourcePos> all_labels_;  // every label in the file (to say "later")
