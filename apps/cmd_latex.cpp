@@ -1,8 +1,12 @@
 // derivcheck latex FILE|DIR... -o out.tex [--fragment] [--annotate] [--title T]
 // Writes the derivations as LaTeX (docs/latex.md). The output file is written atomically and
 // only when every input loaded: an input error leaves no (partial) output and exits 2.
+// A figure that names what draws it (`plot ...`, `simulate ...`) gets its data in a file beside
+// out.tex, named out-figN.dat (N: the figure's number in the document), read by pgfplots.
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <stdexcept>
 #include <iostream>
 
 #include "apps/budget_flags.hpp"
@@ -13,6 +17,7 @@
 #include "derivations/report/latex.hpp"
 #include "derivations/rules/check.hpp"
 #include "derivations/exec/batch.hpp"
+#include "numeric/charts/figure_data.hpp"
 
 namespace dc::cli {
 namespace {
@@ -30,6 +35,29 @@ std::string step_position(const Derivation& d, const Step& s) {
   return d.source.name + ":" + std::to_string(s.pos.line) + ":" + std::to_string(s.pos.col);
 }
 
+// The figures drawn by the code (numeric/charts/figure_data.hpp), their data files beside the
+// .tex and never in a folder the derivations are read from; to stdout, the data stand inline.
+// Any error is an InputError, raised before anything is written.
+chart::DrawnFigures draw_figures(const std::vector<const Derivation*>& ds, const std::string& output,
+                                 const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  const bool to_stdout = output.empty() || output == "-";
+  const fs::path out_path(output);
+  chart::DrawnFigures out = chart::draw_figures(ds, to_stdout ? std::string() : out_path.stem().string());
+  for (auto& [name, text] : out.files) {
+    const fs::path data = out_path.parent_path() / name;
+    for (const auto& in : inputs) {
+      std::error_code ec;
+      if (fs::equivalent(fs::absolute(fs::path(in)).parent_path(), fs::absolute(out_path).parent_path(), ec))
+        throw std::invalid_argument("the figures' data files would be written beside " + in + " (" + data.string() +
+                                    "): write the .tex outside the source folder");
+    }
+    refuse_output_over_inputs(data.string(), inputs);
+    name = data.string();
+  }
+  return out;
+}
+
 int run(const LatexCliOptions& o) {
   const std::vector<std::string> files = dc::derivation_files(o.inputs);
   const bool to_stdout = o.output.empty() || o.output == "-";
@@ -45,6 +73,8 @@ int run(const LatexCliOptions& o) {
                             (res.verdict.holds() ? std::string("has errors") : "is " + std::string(to_string(res.verdict.kind))) +
                             " (" + res.verdict.method + ")");
   }
+  // figure lines are input: a bad one stops everything (exit 2) before any check verdict counts
+  const chart::DrawnFigures figures = draw_figures(checked.derivations, o.output, files);
   if (!unchecked.empty() && !o.allow_unchecked) {
     for (const auto& u : unchecked) std::cerr << u << "\n";
     std::cerr << "derivcheck latex: " << unchecked.size() << (unchecked.size() == 1 ? " step does" : " steps do")
@@ -60,11 +90,13 @@ int run(const LatexCliOptions& o) {
   lo.subtitle = o.subtitle;
   lo.checks = &checked.checks;
   lo.mark_unchecked = o.allow_unchecked;
+  lo.drawn_figures = &figures.pictures;
   std::string tex = write_latex(checked.derivations, lo);
   if (to_stdout) {
     std::cout << tex;
     return kExitOk;
   }
+  for (const auto& [path, text] : figures.files) write_file_atomic(path, text);   // the data before the .tex
   write_file_atomic(o.output, tex);   // InputError (cannot write) -> exit 2, target untouched
   return kExitOk;
 }

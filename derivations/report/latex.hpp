@@ -25,6 +25,7 @@
 //   pi, oo              \pi, \infty
 // A chain a = b = c is one line, or an aligned block (a &= b \\ &= c) when it is long.
 #pragma once
+#include <map>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,10 @@ struct LatexOptions {
   // With `checks`: a step that did not hold (refuted, undecided, a step error) is set apart
   // with a visible mark ("NOT CHECKED: refuted") — for `latex --allow-unchecked`.
   bool mark_unchecked = false;
+  // Figures drawn by the code (`derivcheck latex` fills it, numeric/charts/figure_data.hpp): the
+  // picture (a pgfplots tikzpicture) that stands above a figure's caption instead of the
+  // placeholder box, by the figure's Prose. When it holds any, the preamble loads pgfplots.
+  const std::map<const Prose*, std::string>* drawn_figures = nullptr;
 };
 
 // Did this step hold (proved, numerically, or a premise), apart from a reported erratum?

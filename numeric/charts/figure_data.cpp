@@ -1,0 +1,302 @@
+// Figures drawn from a file's formulas or from a scene (see figure_data.hpp).
+#include "numeric/charts/figure_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include "derivations/reader/figures.hpp"
+#include "numeric/scenes/spec.hpp"
+
+namespace dc::chart {
+
+namespace {
+
+constexpr int kPlotIntervals = 200;          // 201 points along the range
+constexpr std::size_t kSceneRows = 400;      // at most this many rows of a simulation
+
+[[noreturn]] void fail(const Derivation& d, const SourcePos& p, const std::string& msg, int len = 1) {
+  throw InputError(p, msg, std::max(1, len), d.source.line(p.line));
+}
+
+int name_length(const FigureName& n) { return static_cast<int>(n.name.size()); }
+
+// A unit as the author wrote it ("m/s^2", "kg*m/s", "m^(-1/2)") in upright TeX math; "" for
+// none or a dimensionless "1".
+std::string unit_tex(const std::string& u) {
+  if (u.empty() || u == "1") return {};
+  std::string out;
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    const char c = u[i];
+    if (c == '*') {
+      out += "\\,";
+    } else if (c == '^') {
+      std::string e;
+      std::size_t j = i + 1;
+      if (j < u.size() && u[j] == '(') {
+        for (++j; j < u.size() && u[j] != ')'; ++j) e += u[j];
+      } else {
+        while (j < u.size() && (std::isdigit(static_cast<unsigned char>(u[j])) || u[j] == '-')) e += u[j++];
+        --j;
+      }
+      out += "^{" + e + "}";
+      i = j;
+    } else {
+      out += c;
+    }
+  }
+  return "$\\mathrm{" + out + "}$";
+}
+
+std::string symbol_tex(const SymbolInfo& s) { return "$" + s.tex + "$"; }
+std::string with_unit(const std::string& what, const std::string& unit) {
+  const std::string u = unit_tex(unit);
+  return u.empty() ? what : what + " [" + u + "]";
+}
+
+// A constant of the figure line (a `with` value or an end of the range) as an exact GiNaC
+// number; its symbols would make it no number at all.
+GiNaC::ex constant(const Derivation& d, const Node& n, const std::string& what) {
+  GiNaC::ex v;
+  try {
+    v = resolved_ginac(d, n);
+  } catch (const InputError& e) {
+    fail(d, n.pos, what + " must be a number: " + e.message(), n.length);
+  }
+  const GiNaC::ex f = v.evalf();
+  if (!GiNaC::is_a<GiNaC::numeric>(f) || !GiNaC::ex_to<GiNaC::numeric>(f).is_real() ||
+      !std::isfinite(GiNaC::ex_to<GiNaC::numeric>(f).to_double()))
+    fail(d, n.pos, what + " must be a finite real number, not '" + to_text(n) + "'", n.length);
+  return v;
+}
+
+double to_double(const GiNaC::ex& e) { return GiNaC::ex_to<GiNaC::numeric>(e.evalf()).to_double(); }
+
+FigureTable plot_table(const Derivation& d, const FigureSpec& spec) {
+  FigureTable t;
+  // the curves: steps `y = expression`
+  std::vector<Formula> fs;
+  for (const auto& c : spec.curves) {
+    if (!d.find(c.name)) fail(d, c.pos, "no step labelled '" + c.name + "' in this file to plot", name_length(c));
+    try {
+      fs.push_back(formula(d, c.name));
+    } catch (const InputError& e) {
+      fail(d, c.pos, "cannot plot '" + c.name + "': " + e.message(), name_length(c));
+    }
+  }
+  // the horizontal axis
+  const SymbolInfo* var = d.symbols.find(spec.var.name);
+  if (!var || var->is_function)
+    fail(d, spec.var.pos, "'" + spec.var.name + "' is not a declared symbol of this file to plot against",
+         name_length(spec.var));
+  bool used = false;
+  for (const auto& f : fs) used = used || f.expr.has(var->sym);
+  if (!used)
+    fail(d, spec.var.pos, "no plotted formula depends on '" + spec.var.name + "'", name_length(spec.var));
+  const GiNaC::ex lo = constant(d, spec.lo, "the lower end of the range"),
+                  hi = constant(d, spec.hi, "the upper end of the range");
+  if (!(to_double(lo) < to_double(hi)) || (lo - hi).evalf().is_zero())
+    fail(d, spec.range_pos,
+         "empty or reversed range " + to_text(spec.lo) + " .. " + to_text(spec.hi) + ": the lower end must be below the upper",
+         spec.range_length);
+  // the values held fixed
+  GiNaC::exmap fixed;
+  for (const auto& w : spec.with) {
+    const SymbolInfo* s = d.symbols.find(w.name.name);
+    if (!s || s->is_function)
+      fail(d, w.name.pos, "'" + w.name.name + "' is not a declared symbol of this file", name_length(w.name));
+    if (s->name == var->name)
+      fail(d, w.name.pos, "'" + w.name.name + "' runs along the horizontal axis; it takes no value after 'with'",
+           name_length(w.name));
+    const GiNaC::ex v = constant(d, w.value, "the value of '" + w.name.name + "'");
+    const GiNaC::ex vf = v.evalf();
+    if (GiNaC::is_a<GiNaC::numeric>(v) && !s->domain.contains(GiNaC::ex_to<GiNaC::numeric>(v)))
+      fail(d, w.value.pos, "'" + w.name.name + "' = " + to_text(w.value) + " lies outside its declared domain",
+           w.value.length);
+    if (!GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::is_a<GiNaC::numeric>(vf) &&
+        !s->domain.contains(GiNaC::ex_to<GiNaC::numeric>(vf)))
+      fail(d, w.value.pos, "'" + w.name.name + "' = " + to_text(w.value) + " lies outside its declared domain",
+           w.value.length);
+    fixed[s->sym] = v;
+  }
+  for (std::size_t i = 0; i < fs.size(); ++i)
+    for (const auto& p : fs[i].params) {
+      const SymbolInfo* s = d.symbols.find(p.get_name());
+      if (!s || s->name == var->name || fixed.count(s->sym)) continue;
+      fail(d, spec.curves[i].pos,
+           "symbol '" + s->name + "' of '" + spec.curves[i].name + "' has no value: give it after 'with' (with " +
+               s->name + " = ...)",
+           name_length(spec.curves[i]));
+    }
+  // one axis for every curve: their quantities share a unit
+  std::vector<const SymbolInfo*> ys;
+  for (const auto& f : fs) ys.push_back(d.symbols.find(f.target));
+  for (std::size_t i = 1; i < ys.size(); ++i)
+    if (ys[i]->has_dimension && ys[0]->has_dimension && !(ys[i]->dimension == ys[0]->dimension))
+      fail(d, spec.curves[i].pos,
+           "'" + spec.curves[i].name + "' gives " + ys[i]->name + " [" + ys[i]->unit + "], but '" + spec.curves[0].name +
+               "' gives " + ys[0]->name + " [" + ys[0]->unit + "]: curves of one figure share the vertical axis",
+           name_length(spec.curves[i]));
+  t.xlabel = with_unit(symbol_tex(*var), var->unit);
+  std::string names;
+  for (std::size_t i = 0; i < ys.size(); ++i) names += (i ? ", " : "") + symbol_tex(*ys[i]);
+  t.ylabel = with_unit(names, ys[0]->unit);
+  if (ys.size() > 1)
+    for (const auto* y : ys) t.legends.push_back(symbol_tex(*y));
+  // the points: exact x, exact values, one evaluation to double at the end
+  std::vector<GiNaC::ex> exprs;
+  for (const auto& f : fs) exprs.push_back(f.expr.subs(fixed));
+  for (int i = 0; i <= kPlotIntervals; ++i) {
+    const GiNaC::ex x = lo + (hi - lo) * GiNaC::numeric(i, kPlotIntervals);
+    std::vector<double> row{to_double(x)};
+    for (const auto& e : exprs) {
+      double y = std::nan("");
+      try {
+        const GiNaC::ex v = e.subs(GiNaC::lst{var->sym == x}).evalf();
+        if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) y = GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+      } catch (const std::exception&) {
+        // undefined here (a division by zero): a gap in the curve
+      }
+      row.push_back(std::isfinite(y) ? y : std::nan(""));
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+FigureTable scene_table(const Derivation& d, const FigureSpec& spec) {
+  const scenes::SceneSpec* sc = nullptr;
+  try {
+    sc = &scenes::find_scene(spec.scene.name);
+  } catch (const std::invalid_argument& e) {
+    fail(d, spec.scene.pos, e.what(), name_length(spec.scene));
+  }
+  scenes::Params p = scenes::defaults(*sc);
+  for (const auto& w : spec.with) {
+    if (!p.count(w.name.name)) {
+      std::string names;
+      for (const auto& ps : sc->params) names += (names.empty() ? "" : ", ") + ps.name;
+      fail(d, w.name.pos, "scene '" + sc->name + "' has no parameter '" + w.name.name + "'; its parameters: " + names,
+           name_length(w.name));
+    }
+    p[w.name.name] = to_double(constant(d, w.value, "the value of '" + w.name.name + "'"));
+  }
+  scenes::SceneResult r;
+  try {
+    r = scenes::run_scene(*sc, p, scenes::RunOptions{});
+  } catch (const std::exception& e) {   // a parameter out of bounds (domain_error), a bad step
+    fail(d, spec.pos, e.what(), 8);
+  }
+  const auto& f = r.figure;
+  if (f.y.empty() || r.series.rows.empty())
+    fail(d, spec.scene.pos, "scene '" + sc->name + "' draws no figure", name_length(spec.scene));
+  auto col = [&](const std::string& name) {
+    auto it = std::find(r.series.columns.begin(), r.series.columns.end(), name);
+    if (it == r.series.columns.end()) throw std::logic_error("figure: no column '" + name + "'");
+    return static_cast<std::size_t>(it - r.series.columns.begin());
+  };
+  FigureTable t;
+  t.xlabel = f.xlabel;
+  t.ylabel = f.ylabel;
+  for (const auto& y : f.y) t.legends.push_back(y.second);
+  if (t.legends.size() == 1) t.legends.clear();
+  std::vector<std::size_t> cols{col(f.x)};
+  for (const auto& y : f.y) cols.push_back(col(y.first));
+  const std::size_t n = r.series.rows.size();
+  const std::size_t stride = std::max<std::size_t>(1, (n + kSceneRows - 1) / kSceneRows);
+  for (std::size_t i = 0; i < n; i += stride) {
+    std::vector<double> row;
+    for (std::size_t c : cols) row.push_back(r.series.rows[i][c]);
+    t.rows.push_back(std::move(row));
+  }
+  if ((n - 1) % stride != 0) {   // the run's last state closes the curve
+    std::vector<double> row;
+    for (std::size_t c : cols) row.push_back(r.series.rows[n - 1][c]);
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+std::string number(double v) {
+  if (std::isnan(v)) return "nan";
+  if (v == 0) return "0";   // also -0
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::string FigureTable::text() const {
+  std::string out = "x";
+  const std::size_t ny = rows.empty() ? 0 : rows[0].size() - 1;
+  for (std::size_t i = 1; i <= ny; ++i) out += " y" + std::to_string(i);
+  out += "\n";
+  for (const auto& r : rows) {
+    for (std::size_t i = 0; i < r.size(); ++i) out += (i ? " " : "") + number(r[i]);
+    out += "\n";
+  }
+  return out;
+}
+
+std::string FigureTable::pgfplots(const std::string& data_file) const {
+  std::ostringstream o;
+  o << "\\begin{tikzpicture}\n\\begin{axis}[width=0.8\\linewidth, height=0.45\\linewidth, grid=major,\n"
+    << "  xlabel={" << xlabel << "}, ylabel={" << ylabel << "},\n"
+    << "  scaled ticks=false, tick label style={/pgf/number format/fixed}, unbounded coords=jump, enlarge x limits=false";
+  if (!legends.empty())   // above the axes, in one row: the picture keeps its width
+    o << ",\n  legend style={at={(0.5,1.03)}, anchor=south, legend columns=-1, draw=none,\n    /tikz/every even column/.append style={column sep=1em}}";
+  o << "]\n";
+  const std::size_t ny = rows.empty() ? 0 : rows[0].size() - 1;
+  std::string inline_table;
+  if (data_file.empty()) {
+    std::string t = text();
+    for (std::size_t i = 0; i < t.size(); ++i)
+      inline_table += t[i] == '\n' ? std::string("\\\\\n") : std::string(1, t[i]);
+  }
+  for (std::size_t i = 1; i <= ny; ++i) {
+    o << "\\addplot+[thick, mark=none] table[x index=0, y index=" << i;
+    if (data_file.empty()) o << ", row sep=\\\\] {\n" << inline_table << "};\n";
+    else o << "] {" << data_file << "};\n";
+    if (!legends.empty()) o << "\\addlegendentry{" << legends[i - 1] << "}\n";
+  }
+  o << "\\end{axis}\n\\end{tikzpicture}";
+  return o.str();
+}
+
+FigureTable figure_table(const Derivation& d, const FigureSpec& spec) {
+  switch (spec.kind) {
+    case FigureSpec::Kind::Plot: return plot_table(d, spec);
+    case FigureSpec::Kind::Scene: return scene_table(d, spec);
+    case FigureSpec::Kind::Placeholder: break;
+  }
+  throw std::logic_error("figure_table: a placeholder draws nothing");
+}
+
+DrawnFigures draw_figures(const std::vector<const Derivation*>& ds, const std::string& stem) {
+  DrawnFigures out;
+  int number = 0;
+  for (const Derivation* d : ds) {
+    const auto specs = figure_specs(*d);
+    for (std::size_t i = 0; i < d->prose.size(); ++i) {
+      if (d->prose[i].kind != Prose::Kind::Figure) continue;
+      ++number;
+      auto it = specs.find(i);
+      if (it == specs.end()) continue;
+      const FigureTable t = figure_table(*d, it->second);
+      if (stem.empty()) {
+        out.pictures[&d->prose[i]] = t.pgfplots("");
+        continue;
+      }
+      const std::string name = stem + "-fig" + std::to_string(number) + ".dat";
+      out.files.push_back({name, t.text()});
+      out.pictures[&d->prose[i]] = t.pgfplots(name);
+    }
+  }
+  return out;
+}
+
+}  // namespace dc::chart
