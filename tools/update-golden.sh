@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the approved LaTeX in tests/golden/ from derivations/handout9/*.dc.
+# Regenerates the approved LaTeX in tests/golden/ from derivations/handout9/*.dc (with the data
+# files STEM-figN.dat of the figures the files draw).
 # Usage: tools/update-golden.sh [path/to/derivcheck]     (default: build/derivcheck)
 # Review the diff (git diff tests/golden) before committing: these files are what
 # tests/latex/golden_test.cpp compares the writer's output with, byte for byte.
