@@ -164,6 +164,15 @@ FigureTable plot_table(const Derivation& d, const FigureSpec& spec) {
     }
     t.rows.push_back(std::move(row));
   }
+  for (std::size_t c = 0; c < exprs.size(); ++c) {
+    bool any = false;
+    for (const auto& row : t.rows) any = any || !std::isnan(row[c + 1]);
+    if (!any)
+      fail(d, spec.curves[c].pos,
+           "'" + spec.curves[c].name + "' has no real value anywhere on " + spec.var.name + " = " + to_text(spec.lo) +
+               " .. " + to_text(spec.hi) + " with the values given",
+           name_length(spec.curves[c]));
+  }
   return t;
 }
 

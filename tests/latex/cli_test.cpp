@@ -30,13 +30,16 @@ TEST_CASE("derivcheck latex: byte-identical across runs, errors leave no output"
   std::string h9 = std::string(DERIVCHECK_SOURCE_DIR) + "/derivations/handout9";
 
   SECTION("two processes, same bytes (plain and annotated)") {
+    // the same name in two folders: the drawn figures' data files are named after the .tex
+    fs::create_directories(dir / "a");
+    fs::create_directories(dir / "b");
     for (std::string flags : {"", "--annotate", "--fragment"}) {
-      REQUIRE(run("'" + h9 + "' " + flags + " -o '" + (dir / "a.tex").string() + "'") == 0);
-      REQUIRE(run("'" + h9 + "' " + flags + " -o '" + (dir / "b.tex").string() + "'") == 0);
+      REQUIRE(run("'" + h9 + "' " + flags + " -o '" + (dir / "a/h.tex").string() + "'") == 0);
+      REQUIRE(run("'" + h9 + "' " + flags + " -o '" + (dir / "b/h.tex").string() + "'") == 0);
       CAPTURE(flags);
-      std::string a = slurp(dir / "a.tex");
+      std::string a = slurp(dir / "a/h.tex");
       CHECK(a.size() > 10000);
-      CHECK(a == slurp(dir / "b.tex"));
+      CHECK(a == slurp(dir / "b/h.tex"));
     }
   }
   SECTION("an input error exits 2 and writes nothing") {

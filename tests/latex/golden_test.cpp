@@ -1,5 +1,7 @@
 // Golden files: tests/golden/STEM.tex is the approved standalone LaTeX of
-// derivations/handout9/STEM.dc, compared byte for byte. Regenerate after an intended change with
+// derivations/handout9/STEM.dc, as `derivcheck latex STEM.dc -o STEM.tex` writes it, and
+// STEM-figN.dat the data of its drawn figures; all compared byte for byte. Regenerate after an
+// intended change with
 //   tools/update-golden.sh build/derivcheck      (then review `git diff tests/golden`)
 #include <catch2/catch.hpp>
 
@@ -10,6 +12,7 @@
 
 #include "derivations/reader/derivation.hpp"
 #include "derivations/report/latex.hpp"
+#include "numeric/charts/figure_data.hpp"
 
 namespace fs = std::filesystem;
 
@@ -47,9 +50,18 @@ TEST_CASE("latex golden files match byte for byte", "[latex][golden]") {
     fs::path golden = root / "tests/golden" / (src.stem().string() + ".tex");
     CAPTURE(src.string(), golden.string());
     REQUIRE(fs::exists(golden));
-    std::string now = dc::write_latex(dc::load_derivation(src.string()), {});
+    const dc::Derivation d = dc::load_derivation(src.string());
+    const dc::chart::DrawnFigures figures = dc::chart::draw_figures({&d}, src.stem().string());
+    dc::LatexOptions opt;
+    opt.drawn_figures = &figures.pictures;
+    std::string now = dc::write_latex(d, opt);
     std::string approved = slurp(golden);
     INFO(first_difference(now, approved) << "\n(regenerate with tools/update-golden.sh if intended)");
     CHECK(now == approved);
+    for (const auto& [name, text] : figures.files) {
+      CAPTURE(name);
+      REQUIRE(fs::exists(root / "tests/golden" / name));
+      CHECK(text == slurp(root / "tests/golden" / name));
+    }
   }
 }
