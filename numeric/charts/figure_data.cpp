@@ -195,7 +195,9 @@ FigureTable scene_table(const Derivation& d, const FigureSpec& spec) {
   }
   scenes::SceneResult r;
   try {
-    r = scenes::run_scene(*sc, p, scenes::RunOptions{});
+    scenes::RunOptions opt;             // as `derivcheck simulate` runs it without options
+    opt.method = sc->default_method;
+    r = scenes::run_scene(*sc, p, opt);
   } catch (const std::exception& e) {   // a parameter out of bounds (domain_error), a bad step
     fail(d, spec.pos, e.what(), 8);
   }
