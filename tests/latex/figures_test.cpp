@@ -114,6 +114,20 @@ TEST_CASE("a plot figure: data beside the .tex from the file's formulas, pgfplot
   fs::remove_all(dir);
 }
 
+TEST_CASE("latex to stdout: the figure's table stands inline, no data file", "[latex][figures]") {
+  REQUIRE(fs::exists(DERIVCHECK_CLI));
+  const fs::path dir = fresh_dir("stdout");
+  const std::string cmd = "cd '" + dir.string() + "' && '" + DERIVCHECK_CLI + "' latex '" + fixture() + "' > out.txt 2> err.txt";
+  REQUIRE(std::system(cmd.c_str()) == 0);
+  const std::string tex = slurp(dir / "out.txt");
+  CHECK(tex.find("\\addplot+[thick, mark=none] table[x index=0, y index=1, row sep=\\\\] {\nx y1 y2\\\\\n-1 3.5 1.5\\\\\n") !=
+        std::string::npos);
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) files += e.path().extension() == ".dat";
+  CHECK(files == 0);
+  fs::remove_all(dir);
+}
+
 TEST_CASE("the reader keeps what draws each figure, with positions", "[latex][figures]") {
   const dc::Derivation d = dc::load_derivation(fixture());
   const auto specs = dc::figure_specs(d);
