@@ -76,8 +76,8 @@ bool prose_names_a_regime(const std::string& hint) {
 
 class Search {
  public:
-  Search(const Derivation& d, const Step& s, const ProveOptions& opt)
-      : d_(d), s_(s), row_(*s.document_row), opt_(opt) {}
+  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false)
+      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested) {}
 
   StepResult run() {
     StepResult res;
@@ -106,7 +106,7 @@ class Search {
     for (const auto& refs : candidate_sets()) {
       StepResult r = attempt(refs);
       if (!usable(r)) continue;
-      if (r.verdict.holds()) return found(r, "rewrite", refs);
+      if (r.verdict.holds() && !rests_on_a_slip(refs)) return found(r, "rewrite", refs);
       if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs});
     }
     if (row_.relation == "approx")
@@ -214,8 +214,63 @@ class Search {
     for (std::size_t i = 0; i < 4 && i < row_.nearby.size(); ++i) add(with_locals({row_.nearby[i]}));
     add(with_locals(nearest(2)));
     add(with_locals(nearest(4)));
+    // then the rows that speak most of the claim's names, wherever they stand (the law (9.6)
+    // and the definition (9.7) for the general impact, pages after them)
+    const std::vector<std::string> relevant = most_relevant();
+    for (std::size_t n : {2u, 3u, 4u})
+      if (relevant.size() >= n - 1)
+        add(with_locals(std::vector<std::string>(relevant.begin(),
+                                                 relevant.begin() + static_cast<long>(std::min(n, relevant.size())))));
     // (no wider set: the more rows, the likelier two of them — a slip and the row it garbles —
     // pin a quantity to a special value from which anything about it follows)
+    return out;
+  }
+
+  // A proof from several rows is worth nothing when one of them is a slip: the slip and the row
+  // it garbles pin a quantity to a special value, and from that anything about it follows
+  // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
+  // is not a given is searched for itself (one level deep), and a refuted one voids the proof.
+  bool rests_on_a_slip(const std::vector<std::string>& refs) const {
+    if (nested_) return false;
+    std::size_t rows = 0;
+    for (const auto& label : refs)
+      if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline") ++rows;
+    if (rows < 2) return false;
+    for (const auto& label : refs) {
+      const Step* st = d_.find(label);
+      if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+      StepResult own = Search(d_, *st, opt_, true).run();
+      if (own.verdict.kind == VerdictKind::Refuted) return true;
+    }
+    return false;
+  }
+
+  // Earlier rows in force here (their conditions hold here too), by how many of the claim's
+  // names they mention, the nearer first on a tie.
+  std::vector<std::string> most_relevant() const {
+    std::set<std::string> mine;
+    for (const auto& side : s_.claim.sides) names_of(side, mine);
+    std::vector<std::pair<int, std::size_t>> scored;   // (-score, -index)
+    std::size_t index = 0;
+    for (const auto& st : d_.steps) {
+      if (&st == &s_) break;
+      ++index;
+      if (!st.document_row || st.document_row->relation == "inline" || !usable_ref(st.label)) continue;
+      bool in_force = true;
+      for (const auto& c : st.document_row->locals)
+        in_force = in_force && std::find(row_.locals.begin(), row_.locals.end(), c) != row_.locals.end();
+      if (!in_force) continue;
+      std::set<std::string> theirs;
+      for (const auto& side : st.claim.sides) names_of(side, theirs);
+      int score = 0;
+      for (const auto& n : mine) score += theirs.count(n) ? 1 : 0;
+      if (score > 0) scored.push_back({-score, index - 1});
+    }
+    std::sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) {
+      return a.first != b.first ? a.first < b.first : a.second > b.second;
+    });
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < scored.size() && i < 4; ++i) out.push_back(d_.steps[scored[i].second].label);
     return out;
   }
 
@@ -326,6 +381,7 @@ class Search {
   const ProveOptions& opt_;
   std::vector<std::string> new_names_;
   std::vector<std::string> tried_;
+  bool nested_ = false;
 };
 
 }  // namespace
