@@ -245,6 +245,18 @@ class Search {
     return false;
   }
 
+  // Is an earlier document step in force for this row: its conditions (the equations of the
+  // text it was read under) hold here too, and an equation of the text itself is in force only
+  // for the displays it is a condition of.
+  bool in_force(const Step& st) const {
+    auto mine = [&](const std::string& label) {
+      return std::find(row_.locals.begin(), row_.locals.end(), label) != row_.locals.end();
+    };
+    for (const auto& c : st.document_row->locals)
+      if (!mine(c)) return false;
+    return st.document_row->relation != "inline" || mine(st.label);
+  }
+
   // Earlier rows in force here (their conditions hold here too), by how many of the claim's
   // names they mention, the nearer first on a tie.
   std::vector<std::string> most_relevant() const {
@@ -256,10 +268,7 @@ class Search {
       if (&st == &s_) break;
       ++index;
       if (!st.document_row || st.document_row->relation == "inline" || !usable_ref(st.label)) continue;
-      bool in_force = true;
-      for (const auto& c : st.document_row->locals)
-        in_force = in_force && std::find(row_.locals.begin(), row_.locals.end(), c) != row_.locals.end();
-      if (!in_force) continue;
+      if (!in_force(st)) continue;
       std::set<std::string> theirs;
       for (const auto& side : st.claim.sides) names_of(side, theirs);
       int score = 0;
@@ -319,15 +328,7 @@ class Search {
       if (&st == &s_) break;
       if (!st.document_row || !st.document_row->not_read.empty()) continue;
       if (st.document_row->relation != "=" && st.document_row->relation != "inline") continue;
-      // a row of a special case not in force here does not count
-      bool in_force = true;
-      for (const auto& c : st.document_row->locals)
-        in_force = in_force && std::find(row_.locals.begin(), row_.locals.end(), c) != row_.locals.end();
-      // an equation of the text is in force only for the displays it is a condition of
-      if (st.document_row->relation == "inline" &&
-          std::find(row_.locals.begin(), row_.locals.end(), st.label) == row_.locals.end())
-        in_force = false;
-      if (!in_force) continue;
+      if (!in_force(st)) continue;   // a row of a special case not in force here does not count
       const std::string n = set_name(st);
       if (!n.empty() && mine.count(n) && !set_by_refs.count(n))
         return "'" + n + "' is set by " + st.label + ", which is not among them";
