@@ -8,6 +8,7 @@
 #include "apps/budget_flags.hpp"
 #include "apps/checked_files.hpp"
 #include "apps/commands.hpp"
+#include "numeric/charts/figure_data.hpp"
 #include "derivations/report/html.hpp"
 #include "derivations/syntax/io.hpp"
 
@@ -42,6 +43,8 @@ int run(const HtmlCliOptions& o) {
   ho.title = o.title;
   ho.subtitle = o.subtitle;
   ho.summary = summary_text(t, ReportOptions{});
+  const std::map<const Prose*, std::string> figures = chart::svg_figures(checked.derivations);
+  ho.figures = &figures;
   write_html_site(o.output, write_html(checked.derivations, checked.checks, ho), o.katex);
   std::cerr << "derivcheck html: wrote " << o.output << "/index.html (" << summary_text(t, ReportOptions{}) << ")\n";
   return t.exit_code(false);

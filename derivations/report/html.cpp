@@ -97,6 +97,10 @@ details.helpers[open] { border-left: 2px dotted var(--rule); padding-left: .8rem
 figure.placeholder { border: 1px dashed #9a9aa0; border-radius: 4px; margin: 1.2rem 2rem; padding: 1.6rem 1.2rem;
                      text-align: center; }
 figure.placeholder figcaption { font-style: italic; }
+figure.plot { margin: 1.2rem 0; text-align: center; }
+figure.plot svg { max-width: 100%; height: auto; font-family: sans-serif; }
+figure.plot .axes { font-size: 0.85rem; color: #444; margin: 0.2rem 0; }
+figure.plot figcaption { font-style: italic; }
 .remark-label { font-weight: bold; }
 footer { margin-top: 3rem; border-top: 1px solid var(--rule); padding-top: .5rem;
          font: .8rem/1.5 "DejaVu Sans", system-ui, sans-serif; color: var(--muted); }
@@ -123,6 +127,7 @@ renderMathInElement(document.body, {
 
 class PageWriter {
  public:
+  explicit PageWriter(const std::map<const Prose*, std::string>* figures) : figures_(figures) {}
   std::string section(const Derivation& d, const CheckSummary& checks, const std::string& id) {
     const LatexStyle style = latex_style_of(d);
     const HandoutHeading h = handout_heading(d);
@@ -159,8 +164,12 @@ class PageWriter {
           case Prose::Kind::Paragraph: out += "<p>" + text + "</p>\n"; break;
           case Prose::Kind::Remark: out += "<p><span class=\"remark-label\">Remark.</span> " + text + "</p>\n"; break;
           case Prose::Kind::Figure:
-            // The handout's figures are captioned placeholders here, as in the LaTeX today.
-            out += "<figure class=\"placeholder\"><figcaption>Figure: " + text + "</figcaption></figure>\n";
+            // a figure the code draws is its SVG picture; a sketch stays a captioned box, as in the LaTeX
+            if (figures_ && figures_->count(&p))
+              out += "<figure class=\"plot\">" + figures_->at(&p) + "<figcaption>Figure: " + text +
+                     "</figcaption></figure>\n";
+            else
+              out += "<figure class=\"placeholder\"><figcaption>Figure: " + text + "</figcaption></figure>\n";
             break;
         }
       }
@@ -184,6 +193,7 @@ class PageWriter {
   const std::string& toc() const { return toc_; }
 
  private:
+  const std::map<const Prose*, std::string>* figures_ = nullptr;
   std::string toc_;
 
   static std::string step(const Derivation& d, const Step& s, const StepResult& r, const std::string& section_id) {
@@ -257,7 +267,7 @@ VerdictMark verdict_mark(const StepResult& r) {
 std::string write_html(const std::vector<const Derivation*>& ds, const std::vector<const CheckSummary*>& checks,
                        const HtmlOptions& opt) {
   if (checks.size() != ds.size()) throw std::invalid_argument("write_html: one check summary per derivation is needed");
-  PageWriter w;
+  PageWriter w(opt.figures);
   std::string body;
   std::map<std::string, int> ids;   // a file name twice (two folders) gets -2, -3 ...
   for (std::size_t i = 0; i < ds.size(); ++i) {

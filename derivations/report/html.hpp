@@ -5,6 +5,7 @@
 // away. The page is a pure function of the derivations and their check results: byte-identical
 // across runs and processes.
 #pragma once
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,6 +19,9 @@ struct HtmlOptions {
   std::string title;      // default: as `latex` chooses it (handout_title)
   std::string subtitle;   // a line under the title, may be empty
   std::string summary;    // the check summary line shown under the title (summary_text), may be empty
+  // The figures drawn by the code, as SVG by their Prose (numeric/charts: svg_figures); a
+  // figure without one is a captioned placeholder box.
+  const std::map<const Prose*, std::string>* figures = nullptr;
 };
 
 // index.html of the site: one section per derivation, with `checks[i]` the results of

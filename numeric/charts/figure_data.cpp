@@ -278,6 +278,121 @@ std::string FigureTable::pgfplots(const std::string& data_file) const {
   return o.str();
 }
 
+namespace {
+
+// Tick values for [lo, hi]: steps of 1, 2 or 5 times a power of ten, about five of them.
+std::vector<double> ticks(double lo, double hi) {
+  std::vector<double> out;
+  const double span = hi - lo;
+  if (!(span > 0) || !std::isfinite(span)) return {lo};
+  const double raw = span / 5;
+  const double p = std::pow(10.0, std::floor(std::log10(raw)));
+  const double step = raw / p < 1.5 ? p : raw / p < 3.5 ? 2 * p : raw / p < 7.5 ? 5 * p : 10 * p;
+  for (double t = std::ceil(lo / step) * step; t <= hi + step * 1e-9; t += step)
+    out.push_back(std::fabs(t) < step * 1e-9 ? 0.0 : t);
+  return out;
+}
+
+std::string num(double v, const char* fmt = "%.1f") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, v);
+  return buf;
+}
+
+// Text with TeX math between $…$, for the page: escaped for HTML, and the math delimited by
+// \( \) as the page's KaTeX auto-render expects.
+std::string html_text(const std::string& s) {
+  std::string out;
+  bool open = false;
+  for (char c : s) {
+    if (c == '$') {
+      out += open ? "\\)" : "\\(";
+      open = !open;
+    } else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '&') out += "&amp;";
+    else out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string FigureTable::svg() const {
+  constexpr double W = 560, H = 300, L = 64, R = 16, T = 14, B = 36;
+  double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  bool any = false;
+  for (const auto& row : rows)
+    for (std::size_t i = 1; i < row.size(); ++i) {
+      if (!std::isfinite(row[i]) || !std::isfinite(row[0])) continue;
+      if (!any) {
+        x0 = x1 = row[0];
+        y0 = y1 = row[i];
+        any = true;
+      }
+      x0 = std::min(x0, row[0]);
+      x1 = std::max(x1, row[0]);
+      y0 = std::min(y0, row[i]);
+      y1 = std::max(y1, row[i]);
+    }
+  if (!(x1 > x0)) x1 = x0 + 1;
+  if (!(y1 > y0)) {
+    y0 -= 0.5;
+    y1 += 0.5;
+  }
+  const double pad = (y1 - y0) * 0.05;
+  y0 -= pad;
+  y1 += pad;
+  auto px = [&](double x) { return L + (x - x0) / (x1 - x0) * (W - L - R); };
+  auto py = [&](double y) { return T + (y1 - y) / (y1 - y0) * (H - T - B); };
+  static const char* const kColours[] = {"#1f5fa8", "#c0392b", "#2e8b57", "#8e44ad", "#d35400"};
+  std::ostringstream o;
+  o << "<svg class=\"plot\" viewBox=\"0 0 " << W << " " << H << "\" width=\"" << W << "\" height=\"" << H
+    << "\" role=\"img\">\n";
+  o << "<rect x=\"" << L << "\" y=\"" << T << "\" width=\"" << (W - L - R) << "\" height=\"" << (H - T - B)
+    << "\" fill=\"none\" stroke=\"#777\"/>\n";
+  for (double t : ticks(x0, x1))
+    o << "<line x1=\"" << num(px(t)) << "\" y1=\"" << num(H - B) << "\" x2=\"" << num(px(t)) << "\" y2=\""
+      << num(T) << "\" stroke=\"#e4e4e8\"/><text x=\"" << num(px(t)) << "\" y=\"" << num(H - B + 16)
+      << "\" font-size=\"11\" text-anchor=\"middle\">" << num(t, "%.6g") << "</text>\n";
+  for (double t : ticks(y0, y1))
+    o << "<line x1=\"" << num(L) << "\" y1=\"" << num(py(t)) << "\" x2=\"" << num(W - R) << "\" y2=\""
+      << num(py(t)) << "\" stroke=\"#e4e4e8\"/><text x=\"" << num(L - 6) << "\" y=\"" << num(py(t) + 4)
+      << "\" font-size=\"11\" text-anchor=\"end\">" << num(t, "%.6g") << "</text>\n";
+  const std::size_t ny = rows.empty() ? 0 : rows[0].size() - 1;
+  for (std::size_t i = 1; i <= ny; ++i) {
+    std::string points;
+    auto flush = [&] {
+      if (points.find(' ') != std::string::npos)
+        o << "<polyline fill=\"none\" stroke-width=\"2\" stroke=\"" << kColours[(i - 1) % 5] << "\" points=\""
+          << points << "\"/>\n";
+      points.clear();
+    };
+    for (const auto& row : rows) {
+      if (!std::isfinite(row[0]) || !std::isfinite(row[i])) {
+        flush();
+        continue;
+      }
+      points += (points.empty() ? "" : " ") + num(px(row[0])) + "," + num(py(row[i]));
+    }
+    flush();
+  }
+  o << "</svg>\n<div class=\"axes\">horizontal: " << html_text(xlabel) << "; vertical: " << html_text(ylabel);
+  for (std::size_t i = 0; i < legends.size(); ++i)
+    o << "; <span style=\"color:" << kColours[i % 5] << "\">&#9632;</span> " << html_text(legends[i]);
+  o << "</div>";
+  return o.str();
+}
+
+std::map<const Prose*, std::string> svg_figures(const std::vector<const Derivation*>& ds) {
+  std::map<const Prose*, std::string> out;
+  for (const Derivation* d : ds) {
+    const auto specs = figure_specs(*d);
+    for (const auto& [index, spec] : specs) out[&d->prose[index]] = figure_table(*d, spec).svg();
+  }
+  return out;
+}
+
 FigureTable figure_table(const Derivation& d, const FigureSpec& spec) {
   switch (spec.kind) {
     case FigureSpec::Kind::Plot: return plot_table(d, spec);

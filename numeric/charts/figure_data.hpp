@@ -28,6 +28,10 @@ struct FigureTable {
   // A tikzpicture drawing the curves from `data_file` (a file name relative to the .tex, read
   // by pgfplots at compile time); an empty name puts the table inline instead.
   std::string pgfplots(const std::string& data_file) const;
+  // The same curves as an inline SVG picture for the web page (`derivcheck html`): axes with
+  // ticks, one polyline per curve (broken where a value is undefined), and under it an HTML line
+  // naming the axes and the curves in TeX for the page's KaTeX. Deterministic.
+  std::string svg() const;
 };
 
 // Evaluate the figure. Everything wrong with the figure line is a positioned InputError: an
@@ -45,5 +49,8 @@ struct DrawnFigures {
   std::vector<std::pair<std::string, std::string>> files;
 };
 DrawnFigures draw_figures(const std::vector<const Derivation*>& ds, const std::string& stem);
+
+// The same figures as SVG pictures (FigureTable::svg), by the figure's Prose, for `html`.
+std::map<const Prose*, std::string> svg_figures(const std::vector<const Derivation*>& ds);
 
 }  // namespace dc::chart

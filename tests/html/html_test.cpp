@@ -161,6 +161,34 @@ TEST_CASE("byte-identical sites across runs and --jobs", "[html]") {
   CHECK(ta.at("katex/katex.min.js") == slurp("/usr/share/javascript/katex/katex.min.js"));
 }
 
+TEST_CASE("figures the code draws are SVG pictures of the same data, a sketch stays a box", "[html]") {
+  TempDir t("figures");
+  const cli_test::Run r = run({"html", src("tests/data/latex/figures.dc"), "-o", (t.path / "site").string()});
+  REQUIRE(r.exit_code == 0);
+  const std::string page = slurp(t.path / "site" / "index.html");
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t p = page.find(what); p != std::string::npos; p = page.find(what, p + 1)) ++n;
+    return n;
+  };
+  CHECK(count("<figure class=\"plot\"><svg class=\"plot\"") == 1);
+  CHECK(count("<figure class=\"placeholder\">") == 1);
+  CHECK(count("<polyline ") == 2);   // the parabola and the line, each unbroken
+  // the parabola y = 1/2 + 3 x^2 over [-1, 1] reaches 3.5 at both ends: the highest tick is 3
+  CHECK(page.find(">3</text>") != std::string::npos);
+  CHECK(page.find(">4</text>") == std::string::npos);
+  CHECK(page.find("horizontal: \\(x\\)") != std::string::npos);   // axis names typeset by KaTeX
+  // the handout: Example 9.3 from the simulation and the three plots
+  const cli_test::Run h = run({"html", src("derivations/handout9/"), "-o", (t.path / "h").string()});
+  REQUIRE(h.exit_code == 0);
+  const std::string handout = slurp(t.path / "h" / "index.html");
+  std::size_t svgs = 0;
+  for (std::size_t p = handout.find("<svg class=\"plot\""); p != std::string::npos;
+       p = handout.find("<svg class=\"plot\"", p + 1))
+    ++svgs;
+  CHECK(svgs == 4);
+}
+
 TEST_CASE("bad input is a positioned error and writes nothing", "[html]") {
   TempDir t("bad");
   const fs::path bad = t.path / "bad.dc";
