@@ -124,6 +124,7 @@ class DocumentReader {
     calculus::install();
     d_.source = doc_.source;
     d_.title = title();
+    for (const auto& w : doc_.warnings) d_.diagnostics.push_back(w);
     read_tex_macros(doc_.macro_text, ctx_);
     directives();
     if (d_.symbols.find("e")) ctx_.e_is_euler = false;

@@ -99,6 +99,13 @@ class Splitter {
     throw InputError(p, message, 1, doc_.source.line(p.line));
   }
 
+  // An opening delimiter without its closing one: reported, and read as text from here on.
+  void unclosed(std::size_t at, const std::string& message) {
+    const SourcePos p = lines_.at(at);
+    doc_.warnings.push_back(InputError::warning(p, message + "; the text from here is read as prose", 1,
+                                                doc_.source.line(p.line)));
+  }
+
   void directive(std::size_t from, std::size_t to) {
     std::size_t p = from;
     while (p < to && std::isspace(static_cast<unsigned char>(t_[p]))) ++p;
@@ -231,7 +238,10 @@ class Splitter {
         if (!env.empty() && in(kDisplayEnvs, env)) {
           const std::string close = "\\end{" + env + "}";
           const std::size_t e = t_.find(close, end);
-          if (e == std::string::npos) fail(i, "'\\begin{" + env + "}' is not closed by '" + close + "'");
+          if (e == std::string::npos) {
+            unclosed(i, "'\\begin{" + env + "}' is not closed by '" + close + "'");
+            continue;
+          }
           display(i, end, e, env, e + close.size());
           i = e + close.size() - 1;
           continue;
@@ -239,20 +249,31 @@ class Splitter {
         if (!env.empty() && in(kSkipEnvs, env)) {
           const std::string close = "\\end{" + env + "}";
           const std::size_t e = t_.find(close, end);
-          if (e == std::string::npos) fail(i, "'\\begin{" + env + "}' is not closed by '" + close + "'");
+          if (e == std::string::npos) {
+            unclosed(i, "'\\begin{" + env + "}' is not closed by '" + close + "'");
+            continue;
+          }
           i = e + close.size() - 1;
           continue;
         }
         if (t_[i + 1] == '[') {
           const std::size_t e = t_.find("\\]", i + 2);
-          if (e == std::string::npos) fail(i, "'\\[' is not closed by '\\]'");
+          if (e == std::string::npos) {
+            unclosed(i, "'\\[' is not closed by '\\]'");
+            ++i;
+            continue;
+          }
           display(i, i + 2, e, "\\[", e + 2);
           i = e + 1;
           continue;
         }
         if (t_[i + 1] == '(') {
           const std::size_t e = t_.find("\\)", i + 2);
-          if (e == std::string::npos) fail(i, "'\\(' is not closed by '\\)'");
+          if (e == std::string::npos) {
+            unclosed(i, "'\\(' is not closed by '\\)'");
+            ++i;
+            continue;
+          }
           inline_math(i + 2, e);
           i = e + 1;
           continue;
@@ -269,14 +290,18 @@ class Splitter {
       if (c == '$') {
         if (i + 1 < t_.size() && t_[i + 1] == '$') {
           const std::size_t e = t_.find("$$", i + 2);
-          if (e == std::string::npos) fail(i, "'$$' is not closed by '$$'");
+          if (e == std::string::npos) {
+            unclosed(i, "'$$' is not closed by '$$'");
+            ++i;
+            continue;
+          }
           display(i, i + 2, e, "$$", e + 2);
           i = e + 1;
           continue;
         }
         const std::size_t e = inline_close(i);
         if (e == std::string::npos) {
-          if (latex) fail(i, "'$' is not closed by '$'");
+          if (latex) unclosed(i, "'$' is not closed by '$'");
           prose(c);
           continue;
         }

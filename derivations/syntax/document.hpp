@@ -55,12 +55,16 @@ struct Document {
   std::vector<DocInline> inlines;
   std::vector<DocDirective> directives;
   std::string macro_text;    // the text holding \newcommand / \def (LaTeX: the whole document)
+  // Positioned warnings that stop nothing: a display opened and never closed is read as text
+  // (the rest of the document is still checked).
+  std::vector<InputError> warnings;
 };
 
 // Is this path a document the document reader takes (.tex, .ltx, .md, .markdown)?
 bool is_document_path(std::string_view path);
 
-// Split a document. Throws InputError (positioned) for an unclosed display or environment.
+// Split a document. An unclosed display or environment is a warning (Document::warnings) and
+// its opening delimiter is read as text; only an unclosed HTML comment is an InputError.
 Document split_document(SourceText source);
 
 }  // namespace dc

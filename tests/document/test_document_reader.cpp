@@ -98,15 +98,17 @@ TEST_CASE("document split: LaTeX environments, comments, directives, sectioning"
   CHECK(doc.displays[1].rows.size() == 2);   // split unwrapped: its rows are the display's
 }
 
-TEST_CASE("document split: an unclosed display is a positioned error") {
-  try {
-    (void)dc::split_document(dc::SourceText{"bad.md", "text\n\n$$ a = b\n"});
-    FAIL("no error");
-  } catch (const dc::InputError& e) {
-    CHECK(e.pos().line == 3);
-    CHECK(e.pos().col == 1);
-    CHECK(e.message().find("'$$' is not closed") != std::string::npos);
-  }
+TEST_CASE("document split: an unclosed display is a warning and the rest is still read") {
+  dc::Document doc = dc::split_document(dc::SourceText{"bad.md", "$$a = b$$\n\ntext\n$$ c = d\n"});
+  REQUIRE(doc.warnings.size() == 1);
+  CHECK(doc.warnings[0].pos().line == 4);
+  CHECK(doc.warnings[0].pos().col == 1);
+  CHECK(doc.warnings[0].message().find("'$$' is not closed") != std::string::npos);
+  CHECK(doc.displays.size() == 1);
+  // and in a check, the rows before it are still checked
+  dc::Derivation d = dc::read_document(dc::SourceText{"bad.md", "$$y = 2 x$$\n\n$$ y = \n"});
+  REQUIRE(d.diagnostics.size() == 1);
+  CHECK(d.steps.size() == 1);
 }
 
 TEST_CASE("document check: givens, derived rows, a chain, and a slip refuted at its row") {
