@@ -22,26 +22,14 @@
 #include <set>
 
 #include "derivations/document/document.hpp"
+#include "derivations/rules/context.hpp"
 #include "derivations/syntax/document.hpp"
 
 namespace dc {
 namespace {
 
-Verdict holds_as(const std::string& method, const std::string& detail) {
-  Verdict v;
-  v.kind = VerdictKind::Proved;
-  v.method = method;
-  v.detail = detail;
-  return v;
-}
-
-Verdict undecided_because(const std::string& method, const std::string& reason) {
-  Verdict v;
-  v.kind = VerdictKind::Undecided;
-  v.method = method;
-  v.reason = reason;
-  return v;
-}
+using rules::undecided;   // the verdicts the rules build, one construction for both
+using rules::proved;
 
 void names_of(const Node& n, std::set<std::string>& out) {
   if (n.kind == NodeKind::Symbol && !is_reserved_name(n.text)) out.insert(n.text);
@@ -82,14 +70,14 @@ class Search {
   StepResult run() {
     StepResult res;
     res.step = &s_;
-    if (!row_.not_read.empty()) return finish(res, undecided_because("not read", row_.not_read));
+    if (!row_.not_read.empty()) return finish(res, undecided("not read", row_.not_read));
     if (row_.relation == "inline") {
       res.premise = true;
       res.found_rule = "given";
-      return finish(res, holds_as("given", "an equation in the text, in force for the display after it"));
+      return finish(res, proved("given", "an equation in the text, in force for the display after it"));
     }
     if (row_.relation != "=" && row_.relation != "approx")
-      return finish(res, undecided_because("not read", "inequalities ('" + row_.relation +
+      return finish(res, undecided("not read", "inequalities ('" + row_.relation +
                                                             "') in a document are not checked yet"));
     // 1. an identity
     StepResult id = attempt({});
@@ -98,7 +86,7 @@ class Search {
     if (row_.relation == "=" && introduces_names()) {
       res.premise = true;
       res.found_rule = "given";
-      Verdict v = holds_as("given", "introduces " + join(new_names_) + ": a law or a definition, taken as written");
+      Verdict v = proved("given", "introduces " + join(new_names_) + ": a law or a definition, taken as written");
       return finish(res, v);
     }
     // 3. follows from earlier rows
@@ -110,7 +98,7 @@ class Search {
       if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs});
     }
     if (row_.relation == "approx")
-      return finish(res, undecided_because("approximation", "an approximate relation: it does not follow exactly "
+      return finish(res, undecided("approximation", "an approximate relation: it does not follow exactly "
                                                             "from the rows nearby, and the regime it holds in (first "
                                                             "order, a limit) is not searched yet"));
     // the first refutation whose reading is not in doubt refutes; otherwise the first doubt is
@@ -119,7 +107,7 @@ class Search {
       if (reading_in_doubt(r, refs).empty()) return found(r, "rewrite", refs);
     if (!refutations.empty()) {
       const auto& [first, refs] = refutations.front();
-      Verdict v = undecided_because("refutation withheld",
+      Verdict v = undecided("refutation withheld",
                                     "a counterexample satisfies " + join(refs) + ", but " + reading_in_doubt(first, refs));
       v.point = first.verdict.point;
       v.lhs_value = first.verdict.lhs_value;
@@ -127,7 +115,7 @@ class Search {
       return finish(res, v);
     }
     std::string tried = join(tried_);
-    return finish(res, undecided_because("search", "not an identity, and it does not follow from " +
+    return finish(res, undecided("search", "not an identity, and it does not follow from " +
                                                        (tried.empty() ? std::string("the rows before it") : tried)));
   }
 

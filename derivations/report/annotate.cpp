@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "derivations/report/report.hpp"
 #include "derivations/syntax/document.hpp"
 
 namespace dc {
@@ -24,21 +25,6 @@ std::string tex_escape(const std::string& s) {
   return out;
 }
 
-std::string rows_named(const Derivation& d, const StepResult& r) {
-  std::string out;
-  std::vector<std::string> seen;
-  for (const auto& label : r.found_rows) {
-    const Step* st = d.find(label);
-    std::string name = st && !st->tag.empty() ? "(" + st->tag + ")" : st ? "line " + std::to_string(st->pos.line) : label;
-    bool dup = false;
-    for (const auto& x : seen) dup = dup || x == name;
-    if (dup) continue;
-    seen.push_back(name);
-    out += (out.empty() ? "" : ", ") + name;
-  }
-  return out;
-}
-
 // One row's note: "line 126: derived (follows from (9.6), (9.7))".
 std::string note_of(const Derivation& d, const StepResult& r) {
   const Step& s = *r.step;
@@ -49,11 +35,11 @@ std::string note_of(const Derivation& d, const StepResult& r) {
     what = "given";
   } else if (r.verdict.holds()) {
     what = "derived";
-    const std::string rows = rows_named(d, r);
+    const std::string rows = justification_rows(&d, r);
     what += r.found_rule == "identity" ? " (an identity)" : rows.empty() ? "" : " (follows from " + rows + ")";
   } else if (r.verdict.kind == VerdictKind::Refuted) {
     what = "REFUTED";
-    const std::string rows = rows_named(d, r);
+    const std::string rows = justification_rows(&d, r);
     if (!rows.empty()) what += " against " + rows;
     std::string point;
     for (const auto& [name, value] : r.verdict.point) point += (point.empty() ? "" : ", ") + name + " = " + value;

@@ -181,10 +181,7 @@ Totals totals(const std::vector<FileReport>& files) {
 
 // The rule of a step as the report names it: the rule the author wrote, or for a document step
 // the justification the search found ("follows from (9.6), L120", "identity", "given").
-std::string rule_text(const Derivation* d, const Step& s, const StepResult& r) {
-  if (!s.document_row) return s.rule.written_name;
-  if (r.found_rule.empty()) return "(no justification found)";
-  if (r.found_rows.empty()) return r.found_rule;
+std::string justification_rows(const Derivation* d, const StepResult& r) {
   std::string rows;
   std::vector<std::string> named;
   for (const auto& label : r.found_rows) {
@@ -194,7 +191,14 @@ std::string rule_text(const Derivation* d, const Step& s, const StepResult& r) {
     named.push_back(name);
     rows += (rows.empty() ? "" : ", ") + name;
   }
-  return (r.verdict.kind == VerdictKind::Refuted ? "against " : "follows from ") + rows;
+  return rows;
+}
+
+std::string rule_text(const Derivation* d, const Step& s, const StepResult& r) {
+  if (!s.document_row) return s.rule.written_name;
+  if (r.found_rule.empty()) return "(no justification found)";
+  if (r.found_rows.empty()) return r.found_rule;
+  return (r.verdict.kind == VerdictKind::Refuted ? "against " : "follows from ") + justification_rows(d, r);
 }
 
 std::string summary_text(const Totals& t, const ReportOptions& opt) {

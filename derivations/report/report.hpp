@@ -46,6 +46,9 @@ std::string format_text(const std::vector<FileReport>& files, const ReportOption
 // What format_text prints for one step: its line, the evidence, side conditions that are not
 // guaranteed, notes, errors ("" for a step that holds under `quiet`). `d`, when given, names a
 // document step's justification rows by their tags.
+// The rows a document step's justification used, as the report names them: "(9.6)" for a
+// tagged row (once for all its links), else the step's label; "" when none.
+std::string justification_rows(const Derivation* d, const StepResult& r);
 std::string format_step_text(const Step& s, const StepResult& r, const ReportOptions& opt,
                              const Derivation* d = nullptr);
 // The summary line format_text ends with ("64 steps: 12 premises, ..."), without the newline.
