@@ -4,20 +4,13 @@
 // inline givens are in force for a display, which rows a step may cite.
 #include <algorithm>
 #include <cctype>
-#include <functional>
-#include <map>
-#include <set>
 
 #include "derivations/calculus/install.hpp"
-#include "derivations/document/document.hpp"
-#include "derivations/syntax/document.hpp"
+#include "derivations/document/reader.hpp"
 #include "derivations/syntax/io.hpp"
-#include "derivations/syntax/tex_math.hpp"
 
 namespace dc {
-namespace {
-
-constexpr std::size_t kNearby = 8;   // earlier rows a step may cite without the author naming them
+namespace document_detail {
 
 std::string relation_word(TexRel r) {
   switch (r) {
@@ -98,671 +91,556 @@ int vector_degree(const Node& n, const std::set<std::string>& vectors) {
 
 bool is_zero_literal(const Node& n) { return n.kind == NodeKind::Number && (n.text == "0" || n.text == "0.0"); }
 
-// One relation of a row, before it becomes a step.
-struct Link {
-  Node lhs, rhs;
-  std::string relation;
-  int link = 0;
-  std::size_t chain = 0;
-  bool after_gives = false;
-};
+Derivation DocumentReader::run() {
+  calculus::install();
+  d_.source = doc_.source;
+  d_.title = title();
+  for (const auto& w : doc_.warnings) d_.diagnostics.push_back(w);
+  read_tex_macros(doc_.macro_text, ctx_);
+  directives();
+  if (d_.symbols.find("e")) ctx_.e_is_euler = false;
+  parse_rows();
+  inline_givens();
+  neglected_names();
+  build_steps();
+  declare_symbols();
+  assumptions();
+  if (d_.steps.empty())
+    throw InputError({d_.source.name, 0, 0},
+                     "no displayed relation to check (a document needs at least one displayed equation: "
+                     "$$…$$, \\[…\\] or an equation/align environment)");
+  d_.index();
+  return std::move(d_);
+}
 
-struct ReadRow {
-  const DocRow* row = nullptr;
-  std::size_t display = 0;
-  TexRow tex;
-  std::set<std::string> vectors;   // the row's bold names, renamed NAME_vec
-  std::string not_read;
-  SourcePos not_read_pos;
-};
+std::string DocumentReader::title() const {
+  std::string name = doc_.source.name;
+  const std::size_t slash = name.find_last_of('/');
+  if (slash != std::string::npos) name = name.substr(slash + 1);
+  return name;
+}
 
-class DocumentReader {
- public:
-  explicit DocumentReader(SourceText source) : doc_(split_document(std::move(source))) {}
-
-  Derivation run() {
-    calculus::install();
-    d_.source = doc_.source;
-    d_.title = title();
-    for (const auto& w : doc_.warnings) d_.diagnostics.push_back(w);
-    read_tex_macros(doc_.macro_text, ctx_);
-    directives();
-    if (d_.symbols.find("e")) ctx_.e_is_euler = false;
-    parse_rows();
-    inline_givens();
-    build_steps();
-    declare_symbols();
-    assumptions();
-    if (d_.steps.empty())
-      throw InputError({d_.source.name, 0, 0},
-                       "no displayed relation to check (a document needs at least one displayed equation: "
-                       "$$…$$, \\[…\\] or an equation/align environment)");
-    d_.index();
-    return std::move(d_);
-  }
-
- private:
-  std::string title() const {
-    std::string name = doc_.source.name;
-    const std::size_t slash = name.find_last_of('/');
-    if (slash != std::string::npos) name = name.substr(slash + 1);
-    return name;
-  }
-
-  // `derivcheck: symbol …` / `function …` / `assume …` lines, read by the .dc reader; an error
-  // is reported at the directive's own position in the document.
-  void directives() {
-    if (doc_.directives.empty()) return;
-    std::string text;
-    bool exact_columns = true;
-    for (const auto& dir : doc_.directives) {
-      if (dir.text.rfind("assume", 0) == 0) {   // after the names are known (assumptions())
-        assumes_.push_back(&dir);
-        text += "\n";
-        continue;
-      }
-      const std::string line = as_dc(dir);
-      exact_columns = exact_columns && line == dir.text;
-      text += line + "\n";
+// `derivcheck: symbol …` / `function …` / `assume …` lines, read by the .dc reader; an error
+// is reported at the directive's own position in the document.
+void DocumentReader::directives() {
+  if (doc_.directives.empty()) return;
+  std::string text;
+  bool exact_columns = true;
+  for (const auto& dir : doc_.directives) {
+    if (dir.text.rfind("assume", 0) == 0) {   // after the names are known (assumptions())
+      assumes_.push_back(&dir);
+      text += "\n";
+      continue;
     }
-    text += "dc_directives_end: 0 = 0\n  by rewrite\n";
-    Derivation parsed;
-    try {
-      parsed = parse_derivation(SourceText{doc_.source.name, text});
-    } catch (const InputError& e) {
-      const int i = e.pos().line - 1;
-      if (i >= 0 && i < static_cast<int>(doc_.directives.size())) {
-        const SourcePos& o = doc_.directives[static_cast<std::size_t>(i)].origin;
-        SourcePos p{doc_.source.name, o.line, o.col + (exact_columns ? std::max(0, e.pos().col - 1) : 0)};
-        throw InputError(p, e.message() + " (in a derivcheck: directive)", e.length(), doc_.source.line(o.line));
-      }
-      throw InputError({doc_.source.name, 0, 0}, e.message() + " (in the derivcheck: directives)");
-    }
-    d_.symbols = parsed.symbols;
+    const std::string line = as_dc(dir);
+    exact_columns = exact_columns && line == dir.text;
+    text += line + "\n";
   }
-
-  // A directive in the document's own notation, as a .dc line: names may be TeX (`\mu`,
-  // `v'_1`), the dimension may be left out (then the names are dimensionless, as every
-  // undeclared name of a document is), an assumption may be TeX (`\theta < \pi/2`).
-  std::string as_dc(const DocDirective& dir) const {
-    const std::string& t = dir.text;
-    auto word_end = t.find_first_of(" \t");
-    const std::string word = t.substr(0, word_end);
-    if ((word == "symbol" || word == "function") && word_end != std::string::npos) {
-      const std::size_t colon = t.find(':');
-      if (colon == std::string::npos) return t;
-      std::string names;
-      std::size_t p = word_end;
-      while (p < colon) {
-        std::size_t comma = t.find(',', p);
-        if (comma == std::string::npos || comma > colon) comma = colon;
-        std::string name = t.substr(p, comma - p);
-        const std::size_t b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
-        name = b == std::string::npos ? "" : name.substr(b, e - b + 1);
-        if (!name.empty() && word == "symbol") {
-          try {
-            Node n = parse_tex_expression(name, dir.origin, ctx_);
-            if (n.kind == NodeKind::Symbol) name = n.text;
-          } catch (const InputError&) {
-            // left as written: the .dc reader reports it
-          }
-        }
-        names += (names.empty() ? "" : ", ") + name;
-        p = comma + 1;
-      }
-      std::string rest = t.substr(colon);
-      if (rest.find('[') == std::string::npos) {
-        const std::size_t tex = rest.find(" tex ");
-        rest.insert(tex == std::string::npos ? rest.size() : tex, " [1]");
-      }
-      return word + " " + names + " " + rest;
+  text += "dc_directives_end: 0 = 0\n  by rewrite\n";
+  Derivation parsed;
+  try {
+    parsed = parse_derivation(SourceText{doc_.source.name, text});
+  } catch (const InputError& e) {
+    const int i = e.pos().line - 1;
+    if (i >= 0 && i < static_cast<int>(doc_.directives.size())) {
+      const SourcePos& o = doc_.directives[static_cast<std::size_t>(i)].origin;
+      SourcePos p{doc_.source.name, o.line, o.col + (exact_columns ? std::max(0, e.pos().col - 1) : 0)};
+      throw InputError(p, e.message() + " (in a derivcheck: directive)", e.length(), doc_.source.line(o.line));
     }
-    if (word == "assume" && word_end != std::string::npos) {
-      try {
-        TexRow row = parse_tex_row(std::string_view(t).substr(word_end), dir.origin, ctx_);
-        if (row.chains.size() == 1 && row.chains[0].sides.size() == 2) {
-          static const std::map<TexRel, std::string> ops = {
-              {TexRel::Lt, "<"}, {TexRel::Le, "<="}, {TexRel::Gt, ">"}, {TexRel::Ge, ">="}, {TexRel::Ne, "!="}};
-          auto op = ops.find(row.chains[0].rels[0]);
-          if (op != ops.end())
-            return "assume " + to_text(row.chains[0].sides[0]) + " " + op->second + " " +
-                   to_text(row.chains[0].sides[1]);
-        }
-      } catch (const InputError&) {
-      }
-    }
-    return t;
+    throw InputError({doc_.source.name, 0, 0}, e.message() + " (in the derivcheck: directives)");
   }
+  d_.symbols = parsed.symbols;
+}
 
-  // `derivcheck: assume v_1 > v_2` (TeX or .dc notation), once every name is declared.
-  void assumptions() {
-    static const std::map<TexRel, Constraint::Op> ops = {{TexRel::Lt, Constraint::Op::Lt},
-                                                         {TexRel::Le, Constraint::Op::Le},
-                                                         {TexRel::Gt, Constraint::Op::Gt},
-                                                         {TexRel::Ge, Constraint::Op::Ge},
-                                                         {TexRel::Ne, Constraint::Op::Ne}};
-    for (const DocDirective* dir : assumes_) {
-      const std::string_view rel = std::string_view(dir->text).substr(6);
-      SourcePos at = dir->origin;
-      at.col += 6;
-      TexRow row = parse_tex_row(rel, at, ctx_);
-      if (row.chains.size() != 1 || row.chains[0].sides.size() != 2 || !ops.count(row.chains[0].rels[0]))
-        throw InputError(dir->origin, "expected one relation <, <=, >, >= or != after 'assume'",
-                         static_cast<int>(dir->text.size()), doc_.source.line(dir->origin.line));
-      const TexChain& ch = row.chains[0];
-      Constraint c;
-      c.lhs = to_ginac(ch.sides[0], d_.symbols);
-      c.rhs = to_ginac(ch.sides[1], d_.symbols);
-      c.op = ops.at(ch.rels[0]);
-      c.text = to_text(ch.sides[0]) + " " + op_text(c.op) + " " + to_text(ch.sides[1]);
-      c.pos = dir->origin;
-      d_.symbols.add_constraint(std::move(c));
-    }
-  }
-
-  // Does any row use e as a plain symbol (a coefficient of restitution)? Then e^2 is its square.
-  bool uses_symbol_e() const {
-    bool found = false;
-    for (const auto& r : rows_)
-      for (const auto& ch : r.tex.chains)
-        for (const auto& side : ch.sides)
-          walk(side, [&](const Node& x) { found = found || (x.kind == NodeKind::Symbol && x.text == "e"); });
-    return found;
-  }
-
-  void parse_rows() {
-    parse_all_rows();
-    if (ctx_.e_is_euler && uses_symbol_e()) {
-      ctx_.e_numeric_power_is_symbol = true;
-      rows_.clear();
-      parse_all_rows();
-    }
-    join_broken_sides();
-    mark_functions_and_vectors();
-  }
-
-  // A row that begins with + or - after the alignment (`&\quad + c`) is the rest of the
-  // previous row's last side, broken over two rows: joined to it.
-  void join_broken_sides() {
-    std::vector<ReadRow> out;
-    for (auto& r : rows_) {
-      const bool broken = r.not_read.empty() && !r.tex.chains.empty() && r.tex.chains.front().continues_side;
-      if (broken && !out.empty() && out.back().display == r.display && out.back().not_read.empty() &&
-          !out.back().tex.chains.empty() && !out.back().tex.chains.back().sides.empty()) {
-        TexChain& prev = out.back().tex.chains.back();
-        TexChain& rest = r.tex.chains.front();
-        Node sum;
-        sum.kind = NodeKind::Add;
-        sum.pos = prev.sides.back().pos;
-        sum.op_pos = rest.sides.front().pos;
-        sum.args = {prev.sides.back(), rest.sides.front()};
-        prev.sides.back() = std::move(sum);
-        for (std::size_t i = 1; i < rest.sides.size(); ++i) {
-          prev.sides.push_back(rest.sides[i]);
-          prev.rels.push_back(rest.rels[i - 1]);
-          prev.rel_pos.push_back(rest.rel_pos[i - 1]);
-        }
-        for (std::size_t c = 1; c < r.tex.chains.size(); ++c) out.back().tex.chains.push_back(r.tex.chains[c]);
-        if (out.back().tex.tag.empty()) out.back().tex.tag = r.tex.tag;
-        if (out.back().tex.label.empty()) out.back().tex.label = r.tex.label;
-        for (const auto& v : r.tex.vector_names) out.back().tex.vector_names.insert(v);
-        for (const auto& v : r.vectors) out.back().vectors.insert(v);
-        continue;
-      }
-      if (broken) {
-        r.not_read = "the row continues a side, but no row before it in this display has one";
-        r.not_read_pos = r.row->origin;
-      }
-      out.push_back(std::move(r));
-    }
-    rows_ = std::move(out);
-  }
-
-  void parse_all_rows() {
-    for (std::size_t k = 0; k < doc_.displays.size(); ++k) {
-      for (const auto& row : doc_.displays[k].rows) {
-        ReadRow r;
-        r.row = &row;
-        r.display = k;
+// A directive in the document's own notation, as a .dc line: names may be TeX (`\mu`,
+// `v'_1`), the dimension may be left out (then the names are dimensionless, as every
+// undeclared name of a document is), an assumption may be TeX (`\theta < \pi/2`).
+std::string DocumentReader::as_dc(const DocDirective& dir) const {
+  const std::string& t = dir.text;
+  auto word_end = t.find_first_of(" \t");
+  const std::string word = t.substr(0, word_end);
+  if ((word == "symbol" || word == "function") && word_end != std::string::npos) {
+    const std::size_t colon = t.find(':');
+    if (colon == std::string::npos) return t;
+    std::string names;
+    std::size_t p = word_end;
+    while (p < colon) {
+      std::size_t comma = t.find(',', p);
+      if (comma == std::string::npos || comma > colon) comma = colon;
+      std::string name = t.substr(p, comma - p);
+      const std::size_t b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
+      name = b == std::string::npos ? "" : name.substr(b, e - b + 1);
+      if (!name.empty() && word == "symbol") {
         try {
-          r.tex = parse_tex_row(row.text, row.origin, ctx_);
-        } catch (const InputError& e) {
-          r.not_read = e.message();
-          r.not_read_pos = e.pos();
+          Node n = parse_tex_expression(name, dir.origin, ctx_);
+          if (n.kind == NodeKind::Symbol) name = n.text;
+        } catch (const InputError&) {
+          // left as written: the .dc reader reports it
         }
-        // a name written bold is another quantity than the same letter in italic
-        for (const auto& v : r.tex.vector_names) r.vectors.insert(v + "_vec");
-        if (!r.vectors.empty())
-          for (auto& ch : r.tex.chains)
-            for (auto& side : ch.sides) rename_vectors(side, r.tex.vector_names);
-        rows_.push_back(std::move(r));
       }
+      names += (names.empty() ? "" : ", ") + name;
+      p = comma + 1;
+    }
+    std::string rest = t.substr(colon);
+    if (rest.find('[') == std::string::npos) {
+      const std::size_t tex = rest.find(" tex ");
+      rest.insert(tex == std::string::npos ? rest.size() : tex, " [1]");
+    }
+    return word + " " + names + " " + rest;
+  }
+  if (word == "assume" && word_end != std::string::npos) {
+    try {
+      TexRow row = parse_tex_row(std::string_view(t).substr(word_end), dir.origin, ctx_);
+      if (row.chains.size() == 1 && row.chains[0].sides.size() == 2) {
+        static const std::map<TexRel, std::string> ops = {
+            {TexRel::Lt, "<"}, {TexRel::Le, "<="}, {TexRel::Gt, ">"}, {TexRel::Ge, ">="}, {TexRel::Ne, "!="}};
+        auto op = ops.find(row.chains[0].rels[0]);
+        if (op != ops.end())
+          return "assume " + to_text(row.chains[0].sides[0]) + " " + op->second + " " +
+                 to_text(row.chains[0].sides[1]);
+      }
+    } catch (const InputError&) {
     }
   }
+  return t;
+}
 
-  // `W = \int_0^L F\,dx` where another row says `F = F_0 x^2/L^2`: the integrand varies with
-  // x through that row, and reading F as a constant would be wrong. Not read yet.
-  void mark_integrands_through_definitions() {
-    std::map<std::string, std::set<std::string>> defined;   // name -> names of its definition
-    for (const auto& r : rows_)
-      for (const auto& ch : r.tex.chains)
-        if (ch.sides.size() >= 2 && !ch.continues && ch.sides[0].kind == NodeKind::Symbol)
-          for (std::size_t i = 1; i < ch.sides.size(); ++i) symbol_names(ch.sides[i], defined[ch.sides[0].text]);
-    for (auto& r : rows_) {
-      if (!r.not_read.empty()) continue;
-      for (const auto& ch : r.tex.chains)
-        for (const auto& side : ch.sides)
-          walk(side, [&](const Node& x) {
-            if (!r.not_read.empty() || x.kind != NodeKind::Call || x.args.size() < 2) return;
-            if (x.text != "integral") return;
-            if (x.args[1].kind != NodeKind::Symbol) return;
-            const std::string& var = x.args[1].text;
-            std::set<std::string> inner;
-            symbol_names(x.args[0], inner);
-            for (const auto& n : inner) {
-              auto it = defined.find(n);
-              if (n != var && it != defined.end() && it->second.count(var)) {
-                r.not_read = "'" + n + "' varies with " + var +
-                             " through another row's equation; an integral of it is not read yet";
-                r.not_read_pos = x.pos;
-                return;
-              }
-            }
-          });
+// `derivcheck: assume v_1 > v_2` (TeX or .dc notation), once every name is declared.
+void DocumentReader::assumptions() {
+  static const std::map<TexRel, Constraint::Op> ops = {{TexRel::Lt, Constraint::Op::Lt},
+                                                       {TexRel::Le, Constraint::Op::Le},
+                                                       {TexRel::Gt, Constraint::Op::Gt},
+                                                       {TexRel::Ge, Constraint::Op::Ge},
+                                                       {TexRel::Ne, Constraint::Op::Ne}};
+  for (const DocDirective* dir : assumes_) {
+    const std::string_view rel = std::string_view(dir->text).substr(6);
+    SourcePos at = dir->origin;
+    at.col += 6;
+    TexRow row = parse_tex_row(rel, at, ctx_);
+    if (row.chains.size() != 1 || row.chains[0].sides.size() != 2 || !ops.count(row.chains[0].rels[0]))
+      throw InputError(dir->origin, "expected one relation <, <=, >, >= or != after 'assume'",
+                       static_cast<int>(dir->text.size()), doc_.source.line(dir->origin.line));
+    const TexChain& ch = row.chains[0];
+    Constraint c;
+    c.lhs = to_ginac(ch.sides[0], d_.symbols);
+    c.rhs = to_ginac(ch.sides[1], d_.symbols);
+    c.op = ops.at(ch.rels[0]);
+    c.text = to_text(ch.sides[0]) + " " + op_text(c.op) + " " + to_text(ch.sides[1]);
+    c.pos = dir->origin;
+    d_.symbols.add_constraint(std::move(c));
+  }
+}
+
+// Does any row use e as a plain symbol (a coefficient of restitution)? Then e^2 is its square.
+bool DocumentReader::uses_symbol_e() const {
+  bool found = false;
+  for (const auto& r : rows_)
+    for (const auto& ch : r.tex.chains)
+      for (const auto& side : ch.sides)
+        walk(side, [&](const Node& x) { found = found || (x.kind == NodeKind::Symbol && x.text == "e"); });
+  return found;
+}
+
+void DocumentReader::parse_rows() {
+  parse_all_rows();
+  if (ctx_.e_is_euler && uses_symbol_e()) {
+    ctx_.e_numeric_power_is_symbol = true;
+    rows_.clear();
+    parse_all_rows();
+  }
+  join_broken_sides();
+  mark_functions_and_vectors();
+}
+
+// A row that begins with + or - after the alignment (`&\quad + c`) is the rest of the
+// previous row's last side, broken over two rows: joined to it.
+void DocumentReader::join_broken_sides() {
+  std::vector<ReadRow> out;
+  for (auto& r : rows_) {
+    const bool broken = r.not_read.empty() && !r.tex.chains.empty() && r.tex.chains.front().continues_side;
+    if (broken && !out.empty() && out.back().display == r.display && out.back().not_read.empty() &&
+        !out.back().tex.chains.empty() && !out.back().tex.chains.back().sides.empty()) {
+      TexChain& prev = out.back().tex.chains.back();
+      TexChain& rest = r.tex.chains.front();
+      Node sum;
+      sum.kind = NodeKind::Add;
+      sum.pos = prev.sides.back().pos;
+      sum.op_pos = rest.sides.front().pos;
+      sum.args = {prev.sides.back(), rest.sides.front()};
+      prev.sides.back() = std::move(sum);
+      for (std::size_t i = 1; i < rest.sides.size(); ++i) {
+        prev.sides.push_back(rest.sides[i]);
+        prev.rels.push_back(rest.rels[i - 1]);
+        prev.rel_pos.push_back(rest.rel_pos[i - 1]);
+      }
+      for (std::size_t c = 1; c < r.tex.chains.size(); ++c) out.back().tex.chains.push_back(r.tex.chains[c]);
+      if (out.back().tex.tag.empty()) out.back().tex.tag = r.tex.tag;
+      if (out.back().tex.label.empty()) out.back().tex.label = r.tex.label;
+      for (const auto& v : r.tex.vector_names) out.back().tex.vector_names.insert(v);
+      for (const auto& v : r.vectors) out.back().vectors.insert(v);
+      continue;
     }
-  }
-
-  void mark_functions_and_vectors() {
-    mark_integrands_through_definitions();
-    // A name differentiated on its own (dv/dt) is a function of that variable in its display.
-    std::map<std::size_t, std::map<std::string, std::string>> functions;   // display -> name -> var
-    std::set<std::string> plain;
-    for (auto& r : rows_) {
-      for (auto& ch : r.tex.chains)
-        for (auto& side : ch.sides)
-          walk(side, [&](const Node& x) {
-            if (x.kind == NodeKind::Call && x.text == "diff" && x.args.size() >= 2 &&
-                x.args[0].kind == NodeKind::Symbol && x.args[1].kind == NodeKind::Symbol)
-              functions[r.display][x.args[0].text] = x.args[1].text;
-          });
+    if (broken) {
+      r.not_read = "the row continues a side, but no row before it in this display has one";
+      r.not_read_pos = r.row->origin;
     }
-    for (auto& r : rows_) {
-      auto fit = functions.find(r.display);
-      for (auto& ch : r.tex.chains)
-        for (auto& side : ch.sides) {
-          if (fit != functions.end()) to_functions(side, fit->second);
-          symbol_names(side, plain);
-        }
-    }
-    for (const auto& [k, names] : functions)
-      for (const auto& [name, var] : names) function_vars_[function_id(name, var)] = var;
+    out.push_back(std::move(r));
   }
+  rows_ = std::move(out);
+}
 
-  static std::string function_id(const std::string& name, const std::string& var) {
-    return name + "__of_" + var;
-  }
-
-  // Every plain use of a function name becomes its application at the variable.
-  void to_functions(Node& n, const std::map<std::string, std::string>& names) {
-    walk(n, [&](Node& x) {
-      if (x.kind != NodeKind::Symbol) return;
-      auto it = names.find(x.text);
-      if (it == names.end() || x.text == it->second) return;
-      Node var;
-      var.kind = NodeKind::Symbol;
-      var.text = it->second;
-      var.pos = x.pos;
-      x.kind = NodeKind::Call;
-      x.text = function_id(it->first, it->second);
-      x.args = {var};
-    });
-  }
-
-  // An inline equation of the prose (`$e = 1$`) is a given for the display that follows it.
-  void inline_givens() {
-    for (const auto& m : doc_.inlines) {
-      TexRow row;
+void DocumentReader::parse_all_rows() {
+  for (std::size_t k = 0; k < doc_.displays.size(); ++k) {
+    for (const auto& row : doc_.displays[k].rows) {
+      ReadRow r;
+      r.row = &row;
+      r.display = k;
       try {
-        row = parse_tex_row(m.text, m.origin, ctx_);
-      } catch (const InputError&) {
-        continue;   // prose math that is not an equation we read: symbols only
+        r.tex = parse_tex_row(row.text, row.origin, ctx_);
+      } catch (const InputError& e) {
+        r.not_read = e.message();
+        r.not_read_pos = e.pos();
       }
-      note_lone_names(row);
-      for (const auto& ch : row.chains) {
-        // `$\mu = m_1/m_2$`, and the substitutions the text makes (`substitute $v_2 \approx v_0$`)
-        if (ch.continues || ch.sides.size() < 2) continue;
-        bool relations_ok = true;
-        for (TexRel rel : ch.rels) relations_ok = relations_ok && (rel == TexRel::Eq || rel == TexRel::Approx);
-        if (!relations_ok) continue;
-        if (!row.vector_names.empty()) continue;
-        bool has_unit = false;
-        for (const auto& u : ch.side_units) has_unit = has_unit || !u.empty();
-        if (has_unit) continue;   // a value with a unit, `$m_1 = 1 \text{ kg}$`: not read yet
-        Step s;
-        s.label = "I" + std::to_string(m.origin.line) + "." + std::to_string(m.origin.col);
-        s.claim.sides = ch.sides;
-        s.claim_text = to_text(s.claim);
-        s.pos = s.claim_pos = m.origin;
-        s.rule.name = s.rule.written_name = "given";
-        DocumentRow dr;
-        dr.relation = "inline";
-        s.document_row = dr;
-        std::string subject = ch.sides[0].kind == NodeKind::Symbol ? ch.sides[0].text : std::string();
-        inline_steps_.push_back({m.displays_before, static_cast<std::size_t>(m.section), std::move(s), subject});
-      }
+      // a name written bold is another quantity than the same letter in italic
+      for (const auto& v : r.tex.vector_names) r.vectors.insert(v + "_vec");
+      if (!r.vectors.empty())
+        for (auto& ch : r.tex.chains)
+          for (auto& side : ch.sides) rename_vectors(side, r.tex.vector_names);
+      rows_.push_back(std::move(r));
     }
   }
+}
 
-  // A name written once in the whole document, in the text, is used for nothing and defined
-  // nowhere: most often a slip for another name (the seed handout's v_e for u_e).
-  void note_lone_names(const TexRow& row) {
-    for (const auto& ch : row.chains)
-      for (std::size_t i = 0; i < ch.sides.size(); ++i) {
-        const Node& side = ch.sides[i];
-        // the left side of an equation in the text is defined there (`$L_0 = 1$ m`)
-        if (i == 0 && ch.sides.size() > 1 && side.kind == NodeKind::Symbol) continue;
+// `W = \int_0^L F\,dx` where another row says `F = F_0 x^2/L^2`: the integrand varies with
+// x through that row, and reading F as a constant would be wrong. Not read yet.
+void DocumentReader::mark_integrands_through_definitions() {
+  std::map<std::string, std::set<std::string>> defined;   // name -> names of its definition
+  for (const auto& r : rows_)
+    for (const auto& ch : r.tex.chains)
+      if (ch.sides.size() >= 2 && !ch.continues && ch.sides[0].kind == NodeKind::Symbol)
+        for (std::size_t i = 1; i < ch.sides.size(); ++i) symbol_names(ch.sides[i], defined[ch.sides[0].text]);
+  for (auto& r : rows_) {
+    if (!r.not_read.empty()) continue;
+    for (const auto& ch : r.tex.chains)
+      for (const auto& side : ch.sides)
         walk(side, [&](const Node& x) {
-          if (x.kind != NodeKind::Symbol || is_reserved_name(x.text) || x.text.size() < 2) return;
-          auto tex = row.tex_of.find(x.text);
-          if (tex == row.tex_of.end() || tex->second.empty()) return;
-          const std::string& src = doc_.source.text;
-          std::size_t count = 0;
-          for (std::size_t p = src.find(tex->second); p != std::string::npos && count < 2;
-               p = src.find(tex->second, p + 1))
-            ++count;
-          if (count != 1 || !lone_.insert(x.text).second) return;
-          std::vector<std::string> candidates;
-          for (const auto& r : rows_)
-            for (const auto& c : r.tex.chains)
-              for (const auto& sd : c.sides) {
-                std::set<std::string> names;
-                symbol_names(sd, names);
-                for (const auto& n : names)
-                  if (std::find(candidates.begin(), candidates.end(), n) == candidates.end()) candidates.push_back(n);
-              }
-          d_.diagnostics.push_back(InputError::warning(
-              x.pos, "'" + tex->second + "' appears only here: no equation uses or defines it" +
-                         did_you_mean(x.text, candidates),
-              std::max(1, x.length), doc_.source.line(x.pos.line)));
+          if (!r.not_read.empty() || x.kind != NodeKind::Call || x.args.size() < 2) return;
+          if (x.text != "integral") return;
+          if (x.args[1].kind != NodeKind::Symbol) return;
+          const std::string& var = x.args[1].text;
+          std::set<std::string> inner;
+          symbol_names(x.args[0], inner);
+          for (const auto& n : inner) {
+            auto it = defined.find(n);
+            if (n != var && it != defined.end() && it->second.count(var)) {
+              r.not_read = "'" + n + "' varies with " + var +
+                           " through another row's equation; an integral of it is not read yet";
+              r.not_read_pos = x.pos;
+              return;
+            }
+          }
         });
+  }
+}
+
+void DocumentReader::mark_functions_and_vectors() {
+  mark_integrands_through_definitions();
+  // A name differentiated on its own (dv/dt) is a function of that variable in its display.
+  std::map<std::size_t, std::map<std::string, std::string>> functions;   // display -> name -> var
+  std::set<std::string> plain;
+  for (auto& r : rows_) {
+    for (auto& ch : r.tex.chains)
+      for (auto& side : ch.sides)
+        walk(side, [&](const Node& x) {
+          if (x.kind == NodeKind::Call && x.text == "diff" && x.args.size() >= 2 &&
+              x.args[0].kind == NodeKind::Symbol && x.args[1].kind == NodeKind::Symbol)
+            functions[r.display][x.args[0].text] = x.args[1].text;
+        });
+  }
+  for (auto& r : rows_) {
+    auto fit = functions.find(r.display);
+    for (auto& ch : r.tex.chains)
+      for (auto& side : ch.sides) {
+        if (fit != functions.end()) to_functions(side, fit->second);
+        symbol_names(side, plain);
       }
   }
+  for (const auto& [k, names] : functions)
+    for (const auto& [name, var] : names) function_vars_[function_id(name, var)] = var;
+}
 
-  // The conditions in force for a display: the inline givens of the text just before it
-  // (`For equal masses, $m_1 = m_2$, this becomes:`). A display that follows the previous one
-  // with no text between, or whose text adds givens of its own (a special case of the case at
-  // hand), keeps the conditions of the previous display; a given for a name already given
-  // (`$e = 0$` after `$e = 1$`) starts a new case; text without givens ends the case.
-  std::vector<std::string> conditions_for(std::size_t k, const std::vector<std::string>& own,
-                                          const std::vector<std::string>& previous, bool same_section) const {
-    const DocDisplay& disp = doc_.displays[k];
-    const bool has_prose = disp.prose_before.find_first_not_of(" \t\n$") != std::string::npos;
-    if (!same_section) return own;
-    if (has_prose && own.empty()) return {};
-    std::vector<std::string> out = previous;
-    for (const auto& g : own) {
-      const std::string& subject = subject_of_.at(g);
-      for (const auto& p : previous)
-        if (!subject.empty() && subject_of_.at(p) == subject) return own;   // a new case
-      out.push_back(g);
-    }
-    return out;
-  }
+std::string DocumentReader::function_id(const std::string& name, const std::string& var) {
+  return name + "__of_" + var;
+}
 
-  void build_steps() {
-    std::map<std::string, std::vector<std::string>> by_label, by_tag;   // \label / tag -> step labels
-    struct Earlier {
-      std::size_t section;
-      std::string label;
-      std::vector<std::string> conditions;
-    };
-    std::vector<Earlier> section_steps;   // in document order
-    std::size_t next_inline = 0;
-    Node last_side;
-    bool has_last_side = false;
-    std::size_t last_display = static_cast<std::size_t>(-1);
-    std::size_t last_section = static_cast<std::size_t>(-1);
+// Every plain use of a function name becomes its application at the variable.
+void DocumentReader::to_functions(Node& n, const std::map<std::string, std::string>& names) {
+  walk(n, [&](Node& x) {
+    if (x.kind != NodeKind::Symbol) return;
+    auto it = names.find(x.text);
+    if (it == names.end() || x.text == it->second) return;
+    Node var;
+    var.kind = NodeKind::Symbol;
+    var.text = it->second;
+    var.pos = x.pos;
+    x.kind = NodeKind::Call;
+    x.text = function_id(it->first, it->second);
+    x.args = {var};
+  });
+}
+
+void DocumentReader::build_steps() {
+  std::map<std::string, std::vector<std::string>> by_label, by_tag;   // \label / tag -> step labels
+  struct Earlier {
+    std::size_t section;
+    std::string label;
     std::vector<std::string> conditions;
-    for (auto& r : rows_) {
-      const DocDisplay& disp = doc_.displays[r.display];
-      const std::size_t section = static_cast<std::size_t>(disp.section);
-      // inline givens written before this display
-      std::vector<std::string> own;
-      while (next_inline < inline_steps_.size() && inline_steps_[next_inline].displays_before <= r.display) {
-        auto& is = inline_steps_[next_inline++];
+  };
+  std::vector<Earlier> section_steps;   // in document order
+  Node last_side;
+  bool has_last_side = false;
+  std::size_t last_display = static_cast<std::size_t>(-1);
+  std::size_t last_section = static_cast<std::size_t>(-1);
+  std::vector<std::string> conditions, own, fresh, where, earlier;
+  std::vector<bool> pushed(inline_steps_.size(), false);
+  for (auto& r : rows_) {
+    const DocDisplay& disp = doc_.displays[r.display];
+    const std::size_t section = static_cast<std::size_t>(disp.section);
+    if (r.display != last_display) {
+      // inline givens written before this display, and the "where" clause right after it
+      // (pushed before its rows, which may use them)
+      own.clear();
+      where.clear();
+      for (std::size_t i = 0; i < inline_steps_.size(); ++i) {
+        const auto& is = inline_steps_[i];
         subject_of_[is.step.label] = is.subject;
         if (is.displays_before == r.display && is.section == section) own.push_back(is.step.label);
-        d_.steps.push_back(std::move(is.step));
+        if (is.displays_before == r.display + 1 && is.where) where.push_back(is.step.label);
       }
-      if (r.display != last_display) {
-        conditions = conditions_for(r.display, own, conditions, section == last_section);
-        has_last_side = false;
-      }
-      const std::vector<std::string>& locals = conditions;
-      last_display = r.display;
-      last_section = section;
-      const std::string base = "L" + std::to_string(r.row->origin.line);
-      if (!r.not_read.empty()) {
-        has_last_side = false;
-        Step s = unread_step(base, r, r.not_read);
-        d_.steps.push_back(std::move(s));
-        continue;
-      }
-      // cited rows: \eqref in the row, and tags / \eqref in the prose before the display
-      std::vector<std::string> cited;
-      for (const auto& ref : r.tex.refs) add_all(cited, by_label[ref]);
-      for (const auto& tag : tags_in(disp.prose_before)) add_all(cited, by_tag[tag]);
-      std::vector<Link> links;
-      int link_no = 0;
-      std::size_t total = 0;
-      for (const auto& ch : r.tex.chains) total += ch.rels.size();
-      std::string problem;
-      for (std::size_t c = 0; c < r.tex.chains.size(); ++c) {
-        const TexChain& ch = r.tex.chains[c];
-        std::vector<Node> sides = ch.sides;
-        if (ch.continues) {
-          if (!has_last_side) {
-            problem = "the row begins with a relation but no row before it in this display gives its left side";
-            break;
-          }
-          sides[0] = last_side;
-        }
-        for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
-          Link l{sides[i], sides[i + 1], relation_word(ch.rels[i]), total > 1 ? ++link_no : 0};
-          l.chain = c;
-          l.after_gives = ch.follows_previous;
-          links.push_back(std::move(l));
-        }
-        if (!sides.empty()) {
-          last_side = sides.back();
-          has_last_side = true;
+      for (std::size_t i = 0; i < inline_steps_.size(); ++i) {
+        const auto& is = inline_steps_[i];
+        if (!pushed[i] && (is.displays_before <= r.display || (is.displays_before == r.display + 1 && is.where))) {
+          pushed[i] = true;
+          d_.steps.push_back(is.step);
         }
       }
-      if (!problem.empty()) {
-        d_.steps.push_back(unread_step(base, r, problem));
-        continue;
-      }
-      // vectors: each link linear in them, or the row is not read
-      std::string vector_problem;
-      for (auto& l : links) {
-        if (r.vectors.empty()) break;
-        const int a = vector_degree(l.lhs, r.vectors), b = vector_degree(l.rhs, r.vectors);
-        const bool ok = a >= 0 && b >= 0 &&
-                        (a == b || (a == 1 && is_zero_literal(l.rhs)) || (b == 1 && is_zero_literal(l.lhs)));
-        if (!ok)
-          vector_problem = "a vector relation that is not linear in the vectors (a product of vectors, |v|, a "
-                           "vector beside a scalar) is not read yet";
-      }
-      std::vector<std::string> this_row;
-      std::map<std::size_t, std::vector<std::string>> chain_labels;
-      for (auto& l : links) {
-        Step s;
-        s.label = l.link == 0 ? base : base + "." + std::to_string(l.link);
-        if (d_.find(s.label)) s.label += "_" + std::to_string(r.row->origin.col);
-        s.tag = r.tex.tag;
-        s.claim.sides = {l.lhs, l.rhs};
-        s.claim_text = to_text(s.claim);
-        s.pos = r.row->origin;
-        s.claim_pos = l.lhs.pos.line > 0 ? l.lhs.pos : r.row->origin;
-        s.rule.name = s.rule.written_name = "given";
-        DocumentRow dr;
-        dr.link = l.link;
-        dr.display = static_cast<int>(r.display);
-        dr.relation = l.relation;
-        dr.locals = locals;
-        dr.cited = cited;
-        // a chain after "=>" follows from the chain before it
-        if (l.after_gives && l.chain > 0) add_all(dr.cited, chain_labels[l.chain - 1]);
-        // the links before it in the same row come first: a chain continues them
-        for (auto it = this_row.rbegin(); it != this_row.rend(); ++it) dr.nearby.push_back(*it);
-        // earlier rows of the section whose conditions are in force here too
-        for (auto it = section_steps.rbegin(); it != section_steps.rend() && dr.nearby.size() < kNearby; ++it)
-          if (it->section == section && subset(it->conditions, locals))
-            dr.nearby.push_back(it->label);
-        // the text on both sides: "… where the higher-order term was neglected" follows the display
-        dr.hint = hint_of(disp.prose_before);
-        if (r.display + 1 < doc_.displays.size())
-          dr.hint += " " + hint_of(doc_.displays[r.display + 1].prose_before.substr(
-                               0, std::min<std::size_t>(300, doc_.displays[r.display + 1].prose_before.size())));
-        dr.not_read = vector_problem;
-        for (const auto& v : r.vectors) dr.vectors.push_back(v);
-        for (const auto& rd : r.tex.readings) s.notes.push_back(rd.message);
-        s.document_row = std::move(dr);
-        this_row.push_back(s.label);
-        chain_labels[l.chain].push_back(s.label);
-        if (!r.tex.label.empty()) by_label[r.tex.label].push_back(s.label);
-        if (!r.tex.tag.empty()) by_tag[r.tex.tag].push_back(s.label);
-        d_.steps.push_back(std::move(s));
-      }
-      for (const auto& l : this_row) section_steps.push_back({section, l, locals});
+      fresh = own;
+      conditions = conditions_for(r.display, own, conditions, section == last_section);
+      earlier = stated_earlier(r.display, section, conditions);
+      has_last_side = false;
     }
-    while (next_inline < inline_steps_.size()) d_.steps.push_back(std::move(inline_steps_[next_inline++].step));
-  }
-
-  Step unread_step(const std::string& label, const ReadRow& r, const std::string& why) {
-    Step s;
-    s.label = d_.find(label) ? label + "_" + std::to_string(r.row->origin.col) : label;
-    Node zero;
-    zero.kind = NodeKind::Number;
-    zero.text = "0";
-    zero.pos = r.row->origin;
-    s.claim.sides = {zero, zero};
-    std::string text = r.row->text;
-    for (char& c : text)
-      if (c == '\n' || c == '\r' || c == '\t') c = ' ';
-    if (text.size() > 120) text = text.substr(0, 117) + "...";
-    s.claim_text = text;
-    s.pos = s.claim_pos = r.row->origin;
-    s.tag = r.tex.tag;
-    s.rule.name = s.rule.written_name = "given";
-    DocumentRow dr;
-    dr.not_read = why;
-    s.document_row = dr;
-    return s;
-  }
-
-  // Every element of a is in b.
-  static bool subset(const std::vector<std::string>& a, const std::vector<std::string>& b) {
-    for (const auto& x : a)
-      if (std::find(b.begin(), b.end(), x) == b.end()) return false;
-    return true;
-  }
-
-  static void rename_vectors(Node& n, const std::set<std::string>& vectors) {
-    walk(n, [&](Node& x) {
-      if (x.kind == NodeKind::Symbol && vectors.count(x.text)) x.text += "_vec";
-    });
-  }
-
-  static void add_all(std::vector<std::string>& out, const std::vector<std::string>& more) {
-    for (const auto& m : more)
-      if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
-  }
-
-  // "(9.6)", "Eq. 9.6", "\eqref{x}" in prose: the tags and labels it names.
-  static std::vector<std::string> tags_in(const std::string& prose) {
-    std::vector<std::string> out;
-    for (std::size_t i = 0; i < prose.size(); ++i) {
-      if (prose[i] != '(') continue;
-      std::size_t j = i + 1;
-      while (j < prose.size() && (std::isdigit(static_cast<unsigned char>(prose[j])) || prose[j] == '.' ||
-                                  std::isalpha(static_cast<unsigned char>(prose[j]))))
-        ++j;
-      if (j < prose.size() && prose[j] == ')' && j > i + 1 && std::isdigit(static_cast<unsigned char>(prose[i + 1])))
-        out.push_back(prose.substr(i + 1, j - i - 1));
+    const std::vector<std::string>& locals = conditions;
+    last_display = r.display;
+    last_section = section;
+    const std::string base = "L" + std::to_string(r.row->origin.line);
+    if (!r.not_read.empty()) {
+      has_last_side = false;
+      Step s = unread_step(base, r, r.not_read);
+      d_.steps.push_back(std::move(s));
+      continue;
     }
-    return out;
-  }
-
-  static std::string hint_of(const std::string& prose) {
-    std::string tail = prose.size() > 400 ? prose.substr(prose.size() - 400) : prose;
-    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return tail;
-  }
-
-  // Every name the steps use, declared real (unless a directive declared it); the functions
-  // found in parse_rows with their variable.
-  void declare_symbols() {
-    std::set<std::string> names;
-    std::set<std::string> calls;
-    for (const auto& s : d_.steps)
-      for (const auto& side : s.claim.sides) {
-        symbol_names(side, names);
-        walk(side, [&](const Node& x) {
-          if (x.kind == NodeKind::Call && function_vars_.count(x.text)) calls.insert(x.text);
-        });
+    // cited rows: \eqref in the row, and tags / \eqref in the prose before the display
+    std::vector<std::string> cited;
+    for (const auto& ref : r.tex.refs) add_all(cited, by_label[ref]);
+    for (const auto& tag : tags_in(disp.prose_before)) add_all(cited, by_tag[tag]);
+    std::vector<Link> links;
+    int link_no = 0;
+    std::size_t total = 0;
+    for (const auto& ch : r.tex.chains) total += ch.rels.size();
+    std::string problem;
+    for (std::size_t c = 0; c < r.tex.chains.size(); ++c) {
+      const TexChain& ch = r.tex.chains[c];
+      std::vector<Node> sides = ch.sides;
+      if (ch.continues) {
+        if (!has_last_side) {
+          problem = "the row begins with a relation but no row before it in this display gives its left side";
+          break;
+        }
+        sides[0] = last_side;
       }
-    for (const auto& [f, var] : function_vars_) names.insert(var);
-    for (const DocDirective* dir : assumes_) {
-      try {
-        TexRow row = parse_tex_row(std::string_view(dir->text).substr(6), dir->origin, ctx_);
-        for (const auto& ch : row.chains)
-          for (const auto& side : ch.sides) symbol_names(side, names);
-      } catch (const InputError&) {
-        // reported by assumptions()
+      for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+        Link l{sides[i], sides[i + 1], relation_word(ch.rels[i]), total > 1 ? ++link_no : 0};
+        l.chain = c;
+        l.after_gives = ch.follows_previous;
+        links.push_back(std::move(l));
+      }
+      if (!sides.empty()) {
+        last_side = sides.back();
+        has_last_side = true;
       }
     }
-    const Domain real = parse_domain("real", {d_.source.name, 1, 1});
-    for (const auto& n : names) {
-      if (d_.symbols.find(n)) continue;
-      SymbolInfo info;
-      info.name = n;
-      info.domain = real;
-      info.pos = {d_.source.name, 0, 0};
-      d_.symbols.declare(std::move(info));
+    if (!problem.empty()) {
+      d_.steps.push_back(unread_step(base, r, problem));
+      continue;
     }
-    for (const auto& f : calls) {
-      if (d_.symbols.find(f)) continue;
-      SymbolInfo info;
-      info.name = f;
-      info.tex = f.substr(0, f.find("__of_"));
-      info.domain = real;
-      info.is_function = true;
-      info.params = {function_vars_[f]};
-      info.pos = {d_.source.name, 0, 0};
-      d_.symbols.declare(std::move(info));
+    // vectors: each link linear in them, or the row is not read
+    // (each link for itself: `T = \frac12 m v^2 = \frac12 v |\mathbf{p}|` reads its first link)
+    auto vector_problem = [&](const Link& l) -> std::string {
+      if (r.vectors.empty()) return "";
+      const int a = vector_degree(l.lhs, r.vectors), b = vector_degree(l.rhs, r.vectors);
+      const bool ok = a >= 0 && b >= 0 &&
+                      (a == b || (a == 1 && is_zero_literal(l.rhs)) || (b == 1 && is_zero_literal(l.lhs)));
+      return ok ? "" : "a vector relation that is not linear in the vectors (a product of vectors, |v|, a "
+                       "vector beside a scalar) is not read yet";
+    };
+    std::vector<std::string> this_row;
+    std::map<std::size_t, std::vector<std::string>> chain_labels;
+    for (auto& l : links) {
+      Step s;
+      s.label = l.link == 0 ? base : base + "." + std::to_string(l.link);
+      if (d_.find(s.label)) s.label += "_" + std::to_string(r.row->origin.col);
+      s.tag = r.tex.tag;
+      s.claim.sides = {l.lhs, l.rhs};
+      s.claim_text = to_text(s.claim);
+      s.pos = r.row->origin;
+      s.claim_pos = l.lhs.pos.line > 0 ? l.lhs.pos : r.row->origin;
+      s.rule.name = s.rule.written_name = "given";
+      DocumentRow dr;
+      dr.link = l.link;
+      dr.display = static_cast<int>(r.display);
+      dr.relation = l.relation;
+      dr.locals = locals;
+      dr.fresh = fresh;
+      dr.earlier = earlier;
+      dr.where = where;
+      dr.cited = cited;
+      // a chain after "=>" follows from the chain before it
+      if (l.after_gives && l.chain > 0) add_all(dr.cited, chain_labels[l.chain - 1]);
+      // the links before it in the same row come first: a chain continues them
+      for (auto it = this_row.rbegin(); it != this_row.rend(); ++it) dr.nearby.push_back(*it);
+      // earlier rows of the section whose conditions are in force here too
+      for (auto it = section_steps.rbegin(); it != section_steps.rend() && dr.nearby.size() < kNearby; ++it)
+        if (it->section == section && subset(it->conditions, locals))
+          dr.nearby.push_back(it->label);
+      // the text on both sides: "… where the higher-order term was neglected" follows the display
+      dr.hint = hint_of(disp.prose_before);
+      if (r.display + 1 < doc_.displays.size())
+        dr.hint += " " + hint_of(doc_.displays[r.display + 1].prose_before.substr(
+                             0, std::min<std::size_t>(300, doc_.displays[r.display + 1].prose_before.size())));
+      dr.not_read = vector_problem(l);
+      for (const auto& v : r.vectors) dr.vectors.push_back(v);
+      for (const auto& rd : r.tex.readings) s.notes.push_back(rd.message);
+      s.document_row = std::move(dr);
+      this_row.push_back(s.label);
+      chain_labels[l.chain].push_back(s.label);
+      if (!r.tex.label.empty()) by_label[r.tex.label].push_back(s.label);
+      if (!r.tex.tag.empty()) by_tag[r.tex.tag].push_back(s.label);
+      d_.steps.push_back(std::move(s));
+    }
+    for (const auto& l : this_row) section_steps.push_back({section, l, locals});
+  }
+  for (std::size_t i = 0; i < inline_steps_.size(); ++i)
+    if (!pushed[i]) d_.steps.push_back(inline_steps_[i].step);
+}
+
+Step DocumentReader::unread_step(const std::string& label, const ReadRow& r, const std::string& why) {
+  Step s;
+  s.label = d_.find(label) ? label + "_" + std::to_string(r.row->origin.col) : label;
+  Node zero;
+  zero.kind = NodeKind::Number;
+  zero.text = "0";
+  zero.pos = r.row->origin;
+  s.claim.sides = {zero, zero};
+  std::string text = r.row->text;
+  for (char& c : text)
+    if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+  if (text.size() > 120) text = text.substr(0, 117) + "...";
+  s.claim_text = text;
+  s.pos = s.claim_pos = r.row->origin;
+  s.tag = r.tex.tag;
+  s.rule.name = s.rule.written_name = "given";
+  DocumentRow dr;
+  dr.not_read = why;
+  s.document_row = dr;
+  return s;
+}
+
+// Every element of a is in b.
+bool DocumentReader::subset(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  for (const auto& x : a)
+    if (std::find(b.begin(), b.end(), x) == b.end()) return false;
+  return true;
+}
+
+void DocumentReader::rename_vectors(Node& n, const std::set<std::string>& vectors) {
+  walk(n, [&](Node& x) {
+    if (x.kind == NodeKind::Symbol && vectors.count(x.text)) x.text += "_vec";
+  });
+}
+
+void DocumentReader::add_all(std::vector<std::string>& out, const std::vector<std::string>& more) {
+  for (const auto& m : more)
+    if (std::find(out.begin(), out.end(), m) == out.end()) out.push_back(m);
+}
+
+// "(9.6)", "Eq. 9.6", "\eqref{x}" in prose: the tags and labels it names.
+std::vector<std::string> DocumentReader::tags_in(const std::string& prose) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < prose.size(); ++i) {
+    if (prose[i] != '(') continue;
+    std::size_t j = i + 1;
+    while (j < prose.size() && (std::isdigit(static_cast<unsigned char>(prose[j])) || prose[j] == '.' ||
+                                std::isalpha(static_cast<unsigned char>(prose[j]))))
+      ++j;
+    if (j < prose.size() && prose[j] == ')' && j > i + 1 && std::isdigit(static_cast<unsigned char>(prose[i + 1])))
+      out.push_back(prose.substr(i + 1, j - i - 1));
+  }
+  return out;
+}
+
+std::string DocumentReader::hint_of(const std::string& prose) {
+  std::string tail = prose.size() > 400 ? prose.substr(prose.size() - 400) : prose;
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail;
+}
+
+// Every name the steps use, declared real (unless a directive declared it); the functions
+// found in parse_rows with their variable.
+void DocumentReader::declare_symbols() {
+  std::set<std::string> names;
+  std::set<std::string> calls;
+  for (const auto& s : d_.steps)
+    for (const auto& side : s.claim.sides) {
+      symbol_names(side, names);
+      walk(side, [&](const Node& x) {
+        if (x.kind == NodeKind::Call && function_vars_.count(x.text)) calls.insert(x.text);
+      });
+    }
+  for (const auto& [f, var] : function_vars_) names.insert(var);
+  for (const DocDirective* dir : assumes_) {
+    try {
+      TexRow row = parse_tex_row(std::string_view(dir->text).substr(6), dir->origin, ctx_);
+      for (const auto& ch : row.chains)
+        for (const auto& side : ch.sides) symbol_names(side, names);
+    } catch (const InputError&) {
+      // reported by assumptions()
     }
   }
+  const Domain real = parse_domain("real", {d_.source.name, 1, 1});
+  for (const auto& n : names) {
+    if (d_.symbols.find(n)) continue;
+    SymbolInfo info;
+    info.name = n;
+    info.domain = real;
+    info.pos = {d_.source.name, 0, 0};
+    d_.symbols.declare(std::move(info));
+  }
+  for (const auto& f : calls) {
+    if (d_.symbols.find(f)) continue;
+    SymbolInfo info;
+    info.name = f;
+    info.tex = f.substr(0, f.find("__of_"));
+    info.domain = real;
+    info.is_function = true;
+    info.params = {function_vars_[f]};
+    info.pos = {d_.source.name, 0, 0};
+    d_.symbols.declare(std::move(info));
+  }
+}
 
-  struct InlineStep {
-    std::size_t displays_before;
-    std::size_t section;
-    Step step;
-    std::string subject;   // the name on its left side ("" when that is no plain name)
-  };
+}  // namespace document_detail
 
-  Document doc_;
-  Derivation d_;
-  TexContext ctx_;
-  std::vector<ReadRow> rows_;
-  std::vector<InlineStep> inline_steps_;
-  std::map<std::string, std::string> subject_of_;   // inline given -> the name it gives a value
-  std::map<std::string, std::string> function_vars_;
-  std::set<std::string> lone_;
-  std::vector<const DocDirective*> assumes_;
-};
-
-}  // namespace
+using document_detail::DocumentReader;
 
 Derivation read_document(SourceText source) { return DocumentReader(std::move(source)).run(); }
 
@@ -772,3 +650,4 @@ Derivation load_any(const std::string& path) {
 }
 
 }  // namespace dc
+

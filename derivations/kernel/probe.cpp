@@ -69,6 +69,7 @@ void set_refuted(Verdict& v, const PointComparison& c) {
 // `failing`: most points so far were unusable (every fourth is then drawn inside the region
 // the assumptions leave).
 constexpr int kBoundarySweep = 10;   // extra points for claims with assumptions (see probe)
+constexpr int kCapStreak = 24;       // points undecided at the precision cap, and no other, end the search
 
 int tier_of(int attempt, bool failing, bool assumptions) {
   if (failing) return assumptions && attempt % 4 == 3 ? 5 : 1 + attempt % 3;
@@ -310,11 +311,19 @@ Verdict probe(const ex& lhs, const ex& rhs, const SymbolTable& ctx, const ProveO
     }
     v = found;
   };
-  for (; attempts < max_attempts && agreed < need; ++attempts)
+  for (; attempts < max_attempts && agreed < need; ++attempts) {
     if (try_point(tier_of(attempts, attempts >= need * 10, !sampler.constraints().empty()), true)) {
       prefer_ordinary_witness();
       return v;
     }
+    // every point so far undecided at the precision cap (a divisor that is zero on the whole
+    // sample box, not syntactically): more points of the same box cost seconds each and
+    // decide nothing
+    if (unknown >= kCapStreak && unknown == attempts + 1) {
+      ++attempts;
+      break;
+    }
+  }
   // With assumptions, ten more points, alternately next to the boundary of an assumption and
   // inside the region the assumptions leave, which can only refute: a claim false in a thin
   // slice the assumptions leave open (abs(x - 1) = x - 1 with x > 1 - 1e-9) is met far more

@@ -61,6 +61,14 @@ struct DocumentRow {
                                     // written in the prose)
   std::vector<std::string> nearby;  // labels of earlier steps the search may cite, nearest first
   std::vector<std::string> locals;  // labels of the inline givens in force for this row
+  std::vector<std::string> fresh;   // those of them written in the text just before this display
+                                    // (the others carry over from the displays before it)
+  std::vector<std::string> earlier; // inline givens of the same section before it that are not
+                                    // in force here and that no later text re-gives or bounds
+                                    // (`$T_1 = T_2$` paragraphs before): a refutation that they
+                                    // would undo is withheld
+  std::vector<std::string> where;   // inline givens of the text right after the display that
+                                    // define its names ("where $\mu = m_1/m_2$")
   std::vector<std::string> cited;   // labels the author cites (\eqref, "(9.6)") before or in the row
   std::string hint;                 // words of the prose before the display ("substitut", "integrat")
   std::string not_read;             // non-empty: why the row is not checked (notation not read yet)

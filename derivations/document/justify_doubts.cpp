@@ -1,0 +1,224 @@
+// When a counterexample the search found is no evidence against the author (search.hpp): the
+// reading of the row is in doubt (a name reused, a regime in words, a condition stated earlier,
+// a root the row chooses, a sign the document does not declare), or the rows it rests on hold
+// a slip themselves.
+#include <algorithm>
+
+#include "derivations/document/search.hpp"
+
+namespace dc::document_detail {
+
+// A condition the text stated earlier in the section (`$T_1 = T_2$`), not in force here by the
+// reader's rule, under which the row follows from the same rows: the author may still mean it.
+std::string Search::earlier_condition(const std::vector<std::string>& refs) {
+  std::set<std::string> mine;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : row_.earlier) {
+    const Step* st = d_.find(label);
+    if (!st) continue;
+    std::set<std::string> theirs;
+    for (const auto& side : st->claim.sides) names_of(side, theirs);
+    bool shared = false;
+    for (const auto& n : theirs) shared = shared || mine.count(n);
+    if (!shared) continue;
+    std::vector<std::string> with = refs;
+    with.push_back(label);
+    StepResult r = attempt(with);
+    if (usable(r) && r.verdict.holds())
+      return "the row follows from them under " + st->claim_text + ", which the text states earlier (" + label +
+             ") and may still mean here";
+  }
+  return "";
+}
+
+// A refutation against a row that its own search refutes is a refutation against the slip
+// before it: the author's later rows continue from the right result. Each row of the set is
+// searched for itself (one level deep).
+std::string Search::untrusted_row(const std::vector<std::string>& refs) {
+  if (nested_) return "";
+  for (const auto& label : refs) {
+    const Step* st = d_.find(label);
+    if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+    auto it = trusted_.find(label);
+    if (it == trusted_.end()) {
+      StepResult own = Search(d_, *st, opt_, true).run();
+      const bool refuted = own.verdict.kind == VerdictKind::Refuted;
+      it = trusted_.emplace(label, refuted ? std::string("refuted") : std::string()).first;
+    }
+    if (!it->second.empty())
+      return label + " is itself refuted by its own search, and the counterexample rests on it: this row "
+                     "may continue from the right result";
+  }
+  return "";
+}
+
+// Every name of the claim occurs in the rows of the refutation: otherwise the claim speaks
+// of something those rows leave free, and a point where it fails says nothing.
+bool Search::rows_speak_of_claim(const std::vector<std::string>& refs) const {
+  std::set<std::string> mine, theirs;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label))
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+  for (const auto& n : mine)
+    if (!theirs.count(n)) return false;
+  return true;
+}
+
+// The name a row sets: its first side when that is a name, or a power of one (`\omega_d^2 = …`).
+std::string Search::set_name(const Step& st) {
+  const Node* n = &st.claim.sides.front();
+  if (n->kind == NodeKind::Pow) n = &n->args[0];
+  return n->kind == NodeKind::Symbol || n->kind == NodeKind::Call ? to_text(*n) : std::string();
+}
+
+// A name of the claim that some earlier row sets while none of the refuting rows does: the
+// counterexample gives it a value that row forbids, so it says nothing against the author
+// (`a = g\sin\beta/(1 + I/(m r^2)) = \frac{5}{7} g \sin\beta` needs `I = \frac{2}{5} m r^2`).
+std::string Search::unset_name(const std::vector<std::string>& refs) const {
+  // the names of the claim and of the rows: a name the rows leave free (`a` in
+  // `f = m g\sin\beta - m a`) takes any value in the counterexample too
+  std::set<std::string> mine, set_by_refs;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label)) {
+      set_by_refs.insert(set_name(*st));
+      for (const auto& side : st->claim.sides) names_of(side, mine);
+    }
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (!st.document_row || !st.document_row->not_read.empty()) continue;
+    if (st.document_row->relation != "=" && st.document_row->relation != "inline") continue;
+    if (!in_force(st)) continue;   // a row of a special case not in force here does not count
+    const std::string n = set_name(st);
+    if (!n.empty() && mine.count(n) && !set_by_refs.count(n))
+      return "'" + n + "' is set by " + st.label + ", which is not among them";
+  }
+  return "";
+}
+
+// The one non-injective function through which the rows mention the claim's subject x:
+// cos(x), sin(x), tan(x), x^2 (an even power), |x|. Null when x also appears bare, or under
+// two different ones.
+std::optional<Node> Search::branch_wrapper(const std::vector<std::string>& refs, const std::string& x) const {
+  static const std::set<std::string> kPeriodic = {"cos", "sin", "tan", "cot", "sec", "csc", "cosh", "abs"};
+  std::optional<Node> wrapper;
+  bool bare = false, mixed = false, seen = false;
+  std::function<void(const Node&)> visit = [&](const Node& n) {
+    auto wraps_x = [&](const Node& w) {
+      if (w.kind == NodeKind::Call && kPeriodic.count(w.text) && w.args.size() == 1 &&
+          w.args[0].kind == NodeKind::Symbol && w.args[0].text == x)
+        return true;
+      if (w.kind == NodeKind::Pow && w.args[0].kind == NodeKind::Symbol && w.args[0].text == x &&
+          w.args[1].kind == NodeKind::Number && w.args[1].text.find_first_not_of("0123456789") == std::string::npos &&
+          (w.args[1].text.back() - '0') % 2 == 0)
+        return true;
+      return false;
+    };
+    if (wraps_x(n)) {
+      seen = true;
+      if (wrapper && to_text(*wrapper) != to_text(n)) mixed = true;
+      if (!wrapper) wrapper = n;
+      return;
+    }
+    if (n.kind == NodeKind::Symbol && n.text == x) bare = true;
+    for (const auto& a : n.args) visit(a);
+  };
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label))
+      for (const auto& side : st->claim.sides) visit(side);
+  if (!seen || bare || mixed) return std::nullopt;
+  return wrapper;
+}
+
+// A refutation of `x = G` where the rows give only w(x) (cos(x), x^2): the claim with both
+// sides under w is checked from the same rows. Refuted: a slip in what the rows do give, and
+// `wrapped` holds that evidence. Holds: the row picks one root of several, and the reason the
+// counterexample is no evidence (naming the declaration that would decide) is returned.
+std::string Search::branch_doubt(const std::vector<std::string>& refs, std::optional<StepResult>& wrapped) {
+  const Node& subject = s_.claim.sides.front();
+  if (subject.kind != NodeKind::Symbol || s_.claim.sides.size() != 2) return "";
+  const std::optional<Node> w = branch_wrapper(refs, subject.text);
+  if (!w) return "";
+  auto wrap = [&](const Node& side) {
+    Node n = *w;
+    if (n.kind == NodeKind::Call) n.args[0] = side;
+    else n.args[0] = side;
+    return n;
+  };
+  Relation claim;
+  claim.sides = {wrap(s_.claim.sides[0]), wrap(s_.claim.sides[1])};
+  StepResult r = attempt_positive(refs, &claim);
+  if (!usable(r)) return "";
+  if (r.verdict.kind == VerdictKind::Refuted && !side_condition_only(r.verdict)) {
+    r.verdict.detail = "the rows give " + to_text(*w) + ", and the row's value of it differs" +
+                       (r.verdict.detail.empty() ? "" : "; " + r.verdict.detail);
+    wrapped = r;
+    return "";
+  }
+  if (!r.verdict.holds() && !side_condition_only(r.verdict)) return "";
+  const Node& rhs = s_.claim.sides[1];
+  std::string decl;
+  if (w->kind == NodeKind::Pow || w->text == "abs")
+    decl = "assume " + subject.text + (rhs.kind == NodeKind::Neg ? " < 0" : " > 0");
+  else if (rhs.kind == NodeKind::Call && rhs.text == "acos")
+    decl = "assume 0 <= " + subject.text + " <= pi";
+  else if (rhs.kind == NodeKind::Call && (rhs.text == "asin" || rhs.text == "atan"))
+    decl = "assume -pi/2 <= " + subject.text + " <= pi/2";
+  else
+    decl = "assume … (the range of " + subject.text + ")";
+  return "the rows give " + to_text(*w) + " only, and the row picks one value of " + subject.text +
+         " with it (a root the claim chooses); a declaration such as `" + decl + "` decides it";
+}
+
+// A refutation only because one side is undefined where the other is defined (the sides hold
+// equal wherever both are): in a document that declares no ranges, that is a range the
+// author did not state, not a slip.
+bool Search::side_condition_only(const Verdict& v) {
+  return v.kind == VerdictKind::Refuted && v.method.find("+ side condition") != std::string::npos;
+}
+
+// Why a counterexample is no evidence against the author here ("" when it is).
+std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const {
+  if (side_condition_only(r.verdict))
+    return "the sides agree wherever both are defined, and they need different conditions (" + r.verdict.detail +
+           ")";
+  if (std::string unset = unset_name(refs); !unset.empty()) return unset;
+  // `ΔT = …` against an earlier display's `ΔT = …`: documents reuse a name for the quantity
+  // of the next case (the energy lost in an inelastic impact, then in any impact)
+  const Node& subject = s_.claim.sides.front();
+  if (subject.kind == NodeKind::Symbol || subject.kind == NodeKind::Call)
+    for (const auto& label : refs) {
+      const Step* st = d_.find(label);
+      if (!st || !st->document_row || st->document_row->display == row_.display) continue;
+      const Node& theirs = st->claim.sides.front();
+      if (theirs.kind == subject.kind && to_text(theirs) == to_text(subject))
+        return "'" + to_text(subject) + "' is set by " + label +
+               " in an earlier display, and this row may give the name to another quantity";
+    }
+  // a name that varies with t in one display (dv/dt) and is a plain quantity in another
+  std::set<std::string> mine, theirs;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label))
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+  auto base = [](const std::string& n) {
+    const std::size_t of = n.find("__of_");
+    return of == std::string::npos ? n : n.substr(0, of);
+  };
+  for (const auto& a : mine)
+    for (const auto& b : theirs)
+      if (a != b && base(a) == base(b))
+        return "'" + base(a) + "' varies with a variable in one of these rows and is a plain quantity in the other";
+  if (!r.verdict.hint.empty()) return "the row holds under a declaration the document does not make (" + r.verdict.hint + ")";
+  static const std::set<std::string> calculus = {"diff", "integral", "limit"};
+  for (const auto& side : s_.claim.sides)
+    if (has_call(side, calculus))
+      return "the row takes a limit, a derivative or an integral, whose reading (which names vary, the "
+             "regime) is not certain";
+  if (prose_names_a_regime(row_.hint))
+    return "the text before the display names a regime or a law the search does not read";
+  return "";
+}
+
+}  // namespace dc::document_detail

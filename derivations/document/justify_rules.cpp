@@ -1,0 +1,175 @@
+// The rules other than rewrite that the justification search tries (search.hpp): the limit a
+// row takes or the regime an approximate row holds in, solving for the subject of a row, and
+// agreement to first order in the small quantities the text neglects.
+#include <algorithm>
+
+#include "derivations/calculus/big_o.hpp"
+#include "derivations/document/search.hpp"
+
+namespace dc::document_detail {
+
+// The rows a rule may start from: the nearest and the most relevant rows in force, each once.
+std::vector<std::string> Search::source_rows() const {
+  std::vector<std::string> out;
+  auto add = [&](const std::string& l) {
+    if (std::find(out.begin(), out.end(), l) == out.end() && usable_ref(l)) out.push_back(l);
+  };
+  for (const auto& l : row_.cited) add(l);
+  for (std::size_t i = 0; i < 4 && i < row_.nearby.size(); ++i) add(row_.nearby[i]);
+  for (const auto& l : most_relevant()) add(l);
+  return out;
+}
+
+// The locals as `with x = value` substitutions: those whose first side is a name and that do
+// not mention `skip` (a condition on the limit variable cannot hold along the limit).
+std::vector<RuleArg> Search::local_substitutions(const std::vector<std::string>& labels, const std::string& skip) const {
+  std::vector<RuleArg> out;
+  for (const auto& label : labels) {
+    const Step* st = d_.find(label);
+    if (!st || st->claim.sides.size() < 2 || st->claim.sides.front().kind != NodeKind::Symbol) continue;
+    std::set<std::string> names;
+    for (const auto& side : st->claim.sides) names_of(side, names);
+    if (!skip.empty() && names.count(skip)) continue;
+    RuleArg a;
+    a.kind = RuleArg::Kind::Equation;
+    a.label = label;
+    a.equation.sides = {st->claim.sides.front(), st->claim.sides.back()};
+    a.pos = s_.claim_pos;
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+// `v'_1 = \lim_{m_2\to\infty} …` after `v'_1 = f(m_2)`: the limit of that row's expression,
+// with the conditions in force (those on the limit variable dropped). An approximate row
+// under a condition `x \approx 0` (or `= 0`): the limit x -> 0 of a row with the same subject.
+std::optional<StepResult> Search::by_limit() {
+  struct Regime { Node var, point; };
+  std::vector<Regime> regimes;
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& n) {
+      if (n.kind == NodeKind::Call && n.text == "limit" && n.args.size() == 3 && n.args[1].kind == NodeKind::Symbol)
+        regimes.push_back({n.args[1], n.args[2]});
+    });
+  if (row_.relation == "approx")
+    for (const auto& label : row_.locals) {
+      const Step* st = d_.find(label);
+      if (!st || st->claim.sides.size() < 2 || st->claim.sides.front().kind != NodeKind::Symbol) continue;
+      const Node& last = st->claim.sides.back();
+      if ((last.kind == NodeKind::Number && last.text == "0") || (last.kind == NodeKind::Symbol && last.text == "oo"))
+        regimes.push_back({st->claim.sides.front(), last});
+    }
+  if (regimes.empty()) return std::nullopt;
+  const std::string subject = set_name(s_);
+  if (subject.empty()) return std::nullopt;
+  for (const auto& g : regimes)
+    for (const auto& label : source_rows()) {
+      const Step* st = d_.find(label);
+      if (!st || set_name(*st) != subject || st->claim.sides.size() != 2) continue;
+      for (const auto* conds : {&row_.locals, &row_.fresh}) {
+        RuleSpec rule;
+        rule.name = rule.written_name = "limit";
+        rule.var = node_arg(g.var, RuleArg::Kind::Symbol);
+        rule.point = node_arg(g.point, RuleArg::Kind::Value);
+        rule.into.push_back(label_arg(label));
+        rule.with = local_substitutions(*conds, g.var.text);
+        StepResult r = attempt_rule(rule);
+        if (usable(r) && r.verdict.holds() && !rests_on_a_slip({label})) {
+          std::vector<std::string> used{label};
+          for (const auto& w : rule.with) used.push_back(w.label);
+          return found(r, "limit " + to_text(g.var) + " -> " + to_text(g.point), used);
+        }
+      }
+    }
+  return std::nullopt;
+}
+
+// `theta = \arccos(…)` from rows that give cos(theta): solved for the subject, the names of
+// the rows that the claim does not mention eliminated.
+std::optional<StepResult> Search::by_solve() {
+  if (row_.relation != "=") return std::nullopt;
+  const Node& subject = s_.claim.sides.front();
+  if (subject.kind != NodeKind::Symbol) return std::nullopt;
+  std::set<std::string> mine, given;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : row_.locals)
+    if (const Step* st = d_.find(label)) given.insert(set_name(*st));
+  int tries = 0;
+  for (const auto& refs : candidate_sets()) {
+    std::vector<std::string> rows;
+    std::set<std::string> theirs;
+    for (const auto& label : refs) {
+      const Step* st = d_.find(label);
+      if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+      rows.push_back(label);
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+    }
+    if (rows.empty() || !theirs.count(subject.text)) continue;
+    if (++tries > 6) break;
+    RuleSpec rule;
+    rule.name = rule.written_name = "solve";
+    for (const auto& label : refs) rule.refs.push_back(label_arg(label));
+    rule.unknowns.push_back(node_arg(subject, RuleArg::Kind::Symbol));
+    for (const auto& n : theirs) {
+      const SymbolInfo* info = d_.symbols.find(n);
+      if (!mine.count(n) && !given.count(n) && info && !info->is_function) {
+        Node x;
+        x.kind = NodeKind::Symbol;
+        x.text = n;
+        x.pos = s_.claim_pos;
+        rule.unknowns.push_back(node_arg(x, RuleArg::Kind::Symbol));
+      }
+    }
+    StepResult r = attempt_rule(rule);
+    if (usable(r) && r.verdict.holds() && !rests_on_a_slip(refs)) {
+      std::string what = "solve for " + subject.text;
+      return found(r, what, refs);
+    }
+  }
+  return std::nullopt;
+}
+
+// `… = m_r\Delta v - u_e\Delta m` "where the higher-order term was neglected": the two sides
+// differ by terms of second order in the small quantities (the names the text writes with
+// \Delta or \delta), each scaled by one eps -> 0. Only when the text says so; never refutes.
+std::optional<StepResult> Search::by_first_order() {
+  static const char* const kWords[] = {"neglect", "higher-order", "higher order", "first order", "first-order",
+                                       "second order", "second-order", "small"};
+  bool said = false;
+  for (const char* w : kWords) said = said || row_.hint.find(w) != std::string::npos;
+  if (!said || s_.claim.sides.size() != 2) return std::nullopt;
+  std::set<std::string> mine;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  std::vector<GiNaC::ex> smalls;
+  std::vector<std::string> small_names;
+  for (const auto& n : mine)
+    if (n.rfind("Delta_", 0) == 0 || n.rfind("delta_", 0) == 0)
+      if (const SymbolInfo* info = d_.symbols.find(n); info && !info->is_function) {
+        smalls.push_back(info->sym);
+        small_names.push_back(n);
+      }
+  if (smalls.empty()) return std::nullopt;
+  try {
+    SymbolTable scaled = d_.symbols;
+    SymbolInfo info;
+    info.name = "eps";
+    for (int k = 1; scaled.find(info.name); ++k) info.name = "eps" + std::to_string(k);
+    info.domain = Domain::positive();
+    const GiNaC::ex eps = scaled.declare(info).sym;
+    GiNaC::exmap by_eps;
+    for (const auto& x : smalls) by_eps[x] = eps * x;
+    const GiNaC::ex diff = to_ginac(s_.claim.sides[0], d_.symbols) - to_ginac(s_.claim.sides[1], d_.symbols);
+    const GiNaC::ex r = diff.subs(by_eps, GiNaC::subs_options::no_pattern);
+    Verdict v = remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 2, scaled);
+    if (v.kind != VerdictKind::Proved) return std::nullopt;
+    StepResult res;
+    res.step = &s_;
+    res.verdict = proved("first order (" + join(small_names) + " small, as the text says; each scaled by eps)",
+                         "the sides differ by O(eps^2): " + v.method);
+    return found(res, "first_order " + join(small_names), {});
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace dc::document_detail

@@ -1,0 +1,156 @@
+// The justification search of one document step (justify.cpp), internal to the document stage.
+// Its members live in three files: justify.cpp (the order of the search, the candidate sets
+// of rows), justify_rules.cpp (the rules other than rewrite it tries: a limit, solve, first
+// order) and justify_doubts.cpp (when a counterexample is no evidence against the author).
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "derivations/document/document.hpp"
+#include "derivations/rules/context.hpp"
+
+namespace dc::document_detail {
+
+using rules::undecided;   // the verdicts the rules build, one construction for both
+using rules::proved;
+
+// The names a node mentions (symbols and applied functions that are not built in).
+void names_of(const Node& n, std::set<std::string>& out);
+void walk_nodes(const Node& n, const std::function<void(const Node&)>& f);
+bool has_call(const Node& n, const std::set<std::string>& names);
+std::string join(const std::vector<std::string>& xs);
+// Words in the prose around a display that announce a regime or a law.
+bool prose_names_a_regime(const std::string& hint);
+
+class Search {
+ public:
+  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false)
+      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested) {}
+
+  StepResult run();
+
+ private:
+  StepResult finish(StepResult& res, Verdict v);
+
+  StepResult found(StepResult r, const std::string& rule, const std::vector<std::string>& refs);
+
+  // A candidate's result can be used unless its references could not be (contradictory
+  // references, an undefined name): then that set is no evidence either way.
+  static bool usable(const StepResult& r) { return !r.input_error && r.errors.empty(); }
+
+  RuleArg label_arg(const std::string& label) const;
+
+  RuleArg node_arg(const Node& n, RuleArg::Kind kind) const;
+
+  StepResult attempt(const std::vector<std::string>& refs);
+
+  // The step checked with one rule of the .dc language (its rows and arguments filled in).
+  // The rewrite from `refs` in the reading where every name of the document without a declared
+  // domain is positive (masses, lengths, speeds of the usual physical reading).
+  StepResult attempt_positive(const std::vector<std::string>& refs, const Relation* claim = nullptr);
+
+  StepResult attempt_rule(RuleSpec rule, const Relation* claim = nullptr, const Derivation* on = nullptr);
+
+  // The rows a rule may start from: the nearest and the most relevant rows in force, each once.
+  std::vector<std::string> source_rows() const;
+
+  // The locals as `with x = value` substitutions: those whose first side is a name and that do
+  // not mention `skip` (a condition on the limit variable cannot hold along the limit).
+  std::vector<RuleArg> local_substitutions(const std::vector<std::string>& labels, const std::string& skip) const;
+
+  // `v'_1 = \lim_{m_2\to\infty} …` after `v'_1 = f(m_2)`: the limit of that row's expression,
+  // with the conditions in force (those on the limit variable dropped). An approximate row
+  // under a condition `x \approx 0` (or `= 0`): the limit x -> 0 of a row with the same subject.
+  std::optional<StepResult> by_limit();
+
+  // `theta = \arccos(…)` from rows that give cos(theta): solved for the subject, the names of
+  // the rows that the claim does not mention eliminated.
+  std::optional<StepResult> by_solve();
+
+  // `… = m_r\Delta v - u_e\Delta m` "where the higher-order term was neglected": the two sides
+  // differ by terms of second order in the small quantities (the names the text writes with
+  // \Delta or \delta), each scaled by one eps -> 0. Only when the text says so; never refutes.
+  std::optional<StepResult> by_first_order();
+
+  // The names of the claim that no earlier step mentions.
+  bool introduces_names();
+
+  // Small sets first: what the author cites, then the nearest rows, then more of them; the
+  // inline givens in force join every set.
+  std::vector<std::vector<std::string>> candidate_sets() const;
+
+  // A proof from several rows is worth nothing when one of them is a slip: the slip and the row
+  // it garbles pin a quantity to a special value, and from that anything about it follows
+  // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
+  // is not a given is searched for itself (one level deep), and a refuted one voids the proof.
+  bool rests_on_a_slip(const std::vector<std::string>& refs) const;
+
+  // A condition the text stated earlier in the section (`$T_1 = T_2$`), not in force here by the
+  // reader's rule, under which the row follows from the same rows: the author may still mean it.
+  std::string earlier_condition(const std::vector<std::string>& refs);
+
+  // A refutation against a row that its own search refutes is a refutation against the slip
+  // before it: the author's later rows continue from the right result. Each row of the set is
+  // searched for itself (one level deep).
+  std::string untrusted_row(const std::vector<std::string>& refs);
+
+  // Is an earlier document step in force for this row: its conditions (the equations of the
+  // text it was read under) hold here too, and an equation of the text itself is in force only
+  // for the displays it is a condition of.
+  bool in_force(const Step& st) const;
+
+  // Earlier rows in force here (their conditions hold here too), by how many of the claim's
+  // names they mention, the nearer first on a tie.
+  std::vector<std::string> most_relevant() const;
+
+  // A reference must be an equation that was read.
+  bool usable_ref(const std::string& label) const;
+
+  // Every name of the claim occurs in the rows of the refutation: otherwise the claim speaks
+  // of something those rows leave free, and a point where it fails says nothing.
+  bool rows_speak_of_claim(const std::vector<std::string>& refs) const;
+
+  // The name a row sets: its first side when that is a name, or a power of one (`\omega_d^2 = …`).
+  static std::string set_name(const Step& st);
+
+  // A name of the claim that some earlier row sets while none of the refuting rows does: the
+  // counterexample gives it a value that row forbids, so it says nothing against the author
+  // (`a = g\sin\beta/(1 + I/(m r^2)) = \frac{5}{7} g \sin\beta` needs `I = \frac{2}{5} m r^2`).
+  std::string unset_name(const std::vector<std::string>& refs) const;
+
+  // The one non-injective function through which the rows mention the claim's subject x:
+  // cos(x), sin(x), tan(x), x^2 (an even power), |x|. Null when x also appears bare, or under
+  // two different ones.
+  std::optional<Node> branch_wrapper(const std::vector<std::string>& refs, const std::string& x) const;
+
+  // A refutation of `x = G` where the rows give only w(x) (cos(x), x^2): the claim with both
+  // sides under w is checked from the same rows. Refuted: a slip in what the rows do give, and
+  // `wrapped` holds that evidence. Holds: the row picks one root of several, and the reason the
+  // counterexample is no evidence (naming the declaration that would decide) is returned.
+  std::string branch_doubt(const std::vector<std::string>& refs, std::optional<StepResult>& wrapped);
+
+  // A refutation only because one side is undefined where the other is defined (the sides hold
+  // equal wherever both are): in a document that declares no ranges, that is a range the
+  // author did not state, not a slip.
+  static bool side_condition_only(const Verdict& v);
+
+  // Why a counterexample is no evidence against the author here ("" when it is).
+  std::string reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const;
+
+  const Derivation& d_;
+  const Step& s_;
+  const DocumentRow& row_;
+  const ProveOptions& opt_;
+  std::map<std::string, std::string> trusted_;   // label -> "" (a given or derived) or why not
+  std::unique_ptr<Derivation> positive_;   // d_ with every undeclared name positive (made when needed)
+  std::vector<std::string> new_names_;
+  std::vector<std::string> tried_;
+  bool nested_ = false;
+};
+
+}  // namespace dc::document_detail
