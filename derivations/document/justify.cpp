@@ -116,7 +116,21 @@ StepResult Search::run() {
   std::string first_doubt;
   std::vector<std::string> doubt_refs;
   bool doubt_names_declaration = false;
-  for (const auto& [r, refs] : refutations) {
+  for (auto [r, refs] : refutations) {
+    // a name of the claim or the rows that an earlier row in force sets: the counterexample must
+    // satisfy that row too, so the set is widened by it (a few rounds) and tried again
+    for (int round = 0; round < 3; ++round) {
+      const std::vector<std::string> more = unset_setters(refs);
+      if (more.empty()) break;
+      std::vector<std::string> wider = refs;
+      wider.insert(wider.end(), more.begin(), more.end());
+      StepResult w = attempt(wider);
+      if (!usable(w)) break;
+      if (w.verdict.holds() && !rests_on_a_slip(wider)) return found(w, "rewrite", wider);
+      if (w.verdict.kind != VerdictKind::Refuted) break;
+      r = w;
+      refs = wider;
+    }
     std::string doubt = reading_in_doubt(r, refs);
     StepResult evidence = r;
     if (doubt.empty()) {

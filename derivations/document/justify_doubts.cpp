@@ -77,7 +77,39 @@ std::string Search::set_name(const Step& st) {
 // (`a = g\sin\beta/(1 + I/(m r^2)) = \frac{5}{7} g \sin\beta` needs `I = \frac{2}{5} m r^2`).
 std::string Search::unset_name(const std::vector<std::string>& refs) const {
   // the names of the claim and of the rows: a name the rows leave free (`a` in
-  // `f = m g\sin\beta - m a`) takes any value in the counterexample too
+  // `f = m g\sin\beta - m a`) takes any value in the counterexample too. Compared by their
+  // base (`v` and `v__of_t(t)`, the same letter as a function of t in another display)
+  auto base = [](std::string n) {
+    const std::size_t of = n.find("__of_");
+    return of == std::string::npos ? n : n.substr(0, of);
+  };
+  std::set<std::string> mine, set_by_refs;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label)) {
+      set_by_refs.insert(base(set_name(*st)));
+      for (const auto& side : st->claim.sides) names_of(side, mine);
+    }
+  {
+    std::set<std::string> bases;
+    for (const auto& n : mine) bases.insert(base(n));
+    mine = bases;
+  }
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (!st.document_row || !st.document_row->not_read.empty()) continue;
+    if (st.document_row->relation != "=" && st.document_row->relation != "inline") continue;
+    if (!in_force(st)) continue;   // a row of a special case not in force here does not count
+    const std::string n = base(set_name(st));
+    if (!n.empty() && mine.count(n) && !set_by_refs.count(n))
+      return "'" + n + "' is set by " + st.label + ", which is not among them";
+  }
+  return "";
+}
+
+// The rows in force that set a name of the claim or of `refs` that none of `refs` sets (the
+// latest such row for each name).
+std::vector<std::string> Search::unset_setters(const std::vector<std::string>& refs) const {
   std::set<std::string> mine, set_by_refs;
   for (const auto& side : s_.claim.sides) names_of(side, mine);
   for (const auto& label : refs)
@@ -85,16 +117,19 @@ std::string Search::unset_name(const std::vector<std::string>& refs) const {
       set_by_refs.insert(set_name(*st));
       for (const auto& side : st->claim.sides) names_of(side, mine);
     }
+  std::map<std::string, std::string> latest;
   for (const auto& st : d_.steps) {
     if (&st == &s_) break;
     if (!st.document_row || !st.document_row->not_read.empty()) continue;
     if (st.document_row->relation != "=" && st.document_row->relation != "inline") continue;
-    if (!in_force(st)) continue;   // a row of a special case not in force here does not count
+    if (!in_force(st)) continue;
     const std::string n = set_name(st);
-    if (!n.empty() && mine.count(n) && !set_by_refs.count(n))
-      return "'" + n + "' is set by " + st.label + ", which is not among them";
+    if (!n.empty() && mine.count(n) && !set_by_refs.count(n)) latest[n] = st.label;
   }
-  return "";
+  std::vector<std::string> out;
+  for (const auto& [n, label] : latest)
+    if (std::find(refs.begin(), refs.end(), label) == refs.end()) out.push_back(label);
+  return out;
 }
 
 // The one non-injective function through which the rows mention the claim's subject x:

@@ -122,6 +122,7 @@ class Search {
   // counterexample gives it a value that row forbids, so it says nothing against the author
   // (`a = g\sin\beta/(1 + I/(m r^2)) = \frac{5}{7} g \sin\beta` needs `I = \frac{2}{5} m r^2`).
   std::string unset_name(const std::vector<std::string>& refs) const;
+  std::vector<std::string> unset_setters(const std::vector<std::string>& refs) const;
 
   // The one non-injective function through which the rows mention the claim's subject x:
   // cos(x), sin(x), tan(x), x^2 (an even power), |x|. Null when x also appears bare, or under
