@@ -18,6 +18,7 @@
 // derivative or integral in it, no words of a regime or a law in the prose before the display,
 // and no declaration under which it would hold. Anything else is undecided with the reason.
 #include <algorithm>
+#include <cctype>
 
 #include "derivations/document/search.hpp"
 #include "derivations/syntax/document.hpp"
@@ -52,12 +53,27 @@ std::string join(const std::vector<std::string>& xs) {
 // Words in the prose before a display that announce a regime or a law: the row may hold only
 // there, so the search's counterexample is no evidence against the author.
 bool prose_names_a_regime(const std::string& hint) {
-  static const char* const kWords[] = {"assum", "suppos", "approx", "neglect",
-                                       "small", "large", "infinite", "negligible", "much", "limit", "tend",
-                                       "order", "\\gg", "\\ll", "ignor", "roughly", "about", "estimat",
-                                       "integrat", "differentiat", "solution"};
-  for (const char* w : kWords)
+  // whole words (a stem where its forms all say it: neglect, neglecting, neglected)
+  static const char* const kStems[] = {"assum", "suppos", "approx", "neglect", "negligib", "ignor", "estimat",
+                                       "integrat", "differentiat", "lineari", "expan", "\\gg", "\\ll"};
+  static const char* const kWords[] = {"small", "smaller", "large", "larger", "infinite", "infinity", "much",
+                                       "limit", "limiting", "tend", "tends", "tending", "roughly", "solution",
+                                       "series", "expand"};
+  static const char* const kPhrases[] = {"first order", "first-order", "second order", "second-order",
+                                         "higher order", "higher-order", "leading order", "this order", "to order"};
+  for (const char* w : kStems)
     if (hint.find(w) != std::string::npos) return true;
+  for (const char* w : kPhrases)
+    if (hint.find(w) != std::string::npos) return true;
+  for (const char* w : kWords) {
+    const std::string word = w;
+    for (std::size_t p = hint.find(word); p != std::string::npos; p = hint.find(word, p + 1)) {
+      const bool starts = p == 0 || !std::isalpha(static_cast<unsigned char>(hint[p - 1]));
+      const std::size_t e = p + word.size();
+      const bool ends = e >= hint.size() || !std::isalpha(static_cast<unsigned char>(hint[e]));
+      if (starts && ends) return true;
+    }
+  }
   return false;
 }
 
@@ -87,9 +103,21 @@ StepResult Search::run() {
   std::vector<std::pair<StepResult, std::vector<std::string>>> refutations;
   int positive_tries = 0;
   for (const auto& refs : candidate_sets()) {
+    if (late()) break;
     StepResult r = attempt(refs);
     if (!usable(r)) continue;
-    if (r.verdict.holds() && !rests_on_a_slip(refs)) return found(r, "rewrite", refs);
+    if (r.verdict.holds()) {
+      std::vector<std::string> slips;
+      if (!rests_on_a_slip(refs, &slips)) return found(r, "rewrite", refs);
+      // the same rows without the slip among them (a later row may follow from the right ones)
+      std::vector<std::string> rest;
+      for (const auto& l : refs)
+        if (std::find(slips.begin(), slips.end(), l) == slips.end()) rest.push_back(l);
+      if (!slips.empty() && rest.size() < refs.size() && !late()) {
+        StepResult w = attempt(rest);
+        if (usable(w) && w.verdict.holds() && !rests_on_a_slip(rest)) return found(w, "rewrite", rest);
+      }
+    }
     if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs});
     // undecided where the names take any real value (V^gamma at a negative volume): the
     // reading with every undeclared name positive may still find a counterexample, which is
@@ -101,12 +129,15 @@ StepResult Search::run() {
         refutations.push_back({pos, refs});
     }
   }
-  // 4. a limit the row takes, or the regime an approximate row holds in (`$\mu \approx 0$`)
-  if (auto r = by_limit()) return *r;
-  // 5. solved for its subject from earlier rows (theta = arccos(...) from cos(theta) = ...)
-  if (auto r = by_solve()) return *r;
-  // 6. agreement to first order in the small quantities the text neglects
-  if (auto r = by_first_order()) return *r;
+  // (a nested search only asks whether the row is refuted: the rules below only prove)
+  if (!nested_) {
+    // 4. a limit the row takes, or the regime an approximate row holds in (`$\mu \approx 0$`)
+    if (auto r = by_limit()) return *r;
+    // 5. solved for its subject from earlier rows (theta = arccos(...) from cos(theta) = ...)
+    if (auto r = by_solve()) return *r;
+    // 6. agreement to first order in the small quantities the text neglects
+    if (auto r = by_first_order()) return *r;
+  }
   if (row_.relation == "approx")
     return finish(res, undecided("approximation", "an approximate relation: it does not follow exactly "
                                                           "from the rows nearby, and the regime it holds in (first "
@@ -119,7 +150,7 @@ StepResult Search::run() {
   for (auto [r, refs] : refutations) {
     // a name of the claim or the rows that an earlier row in force sets: the counterexample must
     // satisfy that row too, so the set is widened by it (a few rounds) and tried again
-    for (int round = 0; round < 3; ++round) {
+    for (int round = 0; round < 3 && !late(); ++round) {
       const std::vector<std::string> more = unset_setters(refs);
       if (more.empty()) break;
       std::vector<std::string> wider = refs;
@@ -127,11 +158,17 @@ StepResult Search::run() {
       StepResult w = attempt(wider);
       if (!usable(w)) break;
       if (w.verdict.holds() && !rests_on_a_slip(wider)) return found(w, "rewrite", wider);
+      if (w.verdict.kind == VerdictKind::Undecided && row_.relation == "=" && !late()) {
+        StepResult pos = attempt_positive(wider);   // ln(p_2/p_1) at negative pressures
+        if (usable(pos) && pos.verdict.kind == VerdictKind::Refuted && !side_condition_only(pos.verdict)) w = pos;
+      }
       if (w.verdict.kind != VerdictKind::Refuted) break;
       r = w;
       refs = wider;
     }
     std::string doubt = reading_in_doubt(r, refs);
+    if (doubt.empty() && late())
+      doubt = "the search ran out of its time before it could check that the reading of the row is not in doubt";
     StepResult evidence = r;
     if (doubt.empty()) {
       // the document declares no signs: a counterexample at a negative mass or length is no
@@ -332,19 +369,27 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
 // it garbles pin a quantity to a special value, and from that anything about it follows
 // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
 // is not a given is searched for itself (one level deep), and a refuted one voids the proof.
-bool Search::rests_on_a_slip(const std::vector<std::string>& refs) const {
+bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<std::string>* slips) const {
   if (nested_) return false;
   std::size_t rows = 0;
   for (const auto& label : refs)
     if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline") ++rows;
   if (rows < 2) return false;
+  bool any = false;
   for (const auto& label : refs) {
     const Step* st = d_.find(label);
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
-    StepResult own = Search(d_, *st, opt_, true).run();
-    if (own.verdict.kind == VerdictKind::Refuted) return true;
+    if (late()) return true;   // not checked in time: no proof rests on it
+    auto it = refuted_.find(label);
+    if (it == refuted_.end())
+      it = refuted_.emplace(label, Search(d_, *st, opt_, true, started_).run().verdict.kind == VerdictKind::Refuted).first;
+    if (late()) return true;
+    if (it->second) {
+      any = true;
+      if (slips) slips->push_back(label);
+    }
   }
-  return false;
+  return any;
 }
 
 // Is an earlier document step in force for this row: its conditions (the equations of the

@@ -41,13 +41,15 @@ std::string Search::untrusted_row(const std::vector<std::string>& refs) {
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
     auto it = trusted_.find(label);
     if (it == trusted_.end()) {
-      StepResult own = Search(d_, *st, opt_, true).run();
-      const bool refuted = own.verdict.kind == VerdictKind::Refuted;
-      it = trusted_.emplace(label, refuted ? std::string("refuted") : std::string()).first;
+      StepResult own = Search(d_, *st, opt_, true, started_).run();
+      const std::string why = own.verdict.kind == VerdictKind::Refuted ? "is itself refuted by its own search"
+                              : late()                                 ? "could not be checked in time itself"
+                                                                       : "";
+      it = trusted_.emplace(label, why).first;
     }
     if (!it->second.empty())
-      return label + " is itself refuted by its own search, and the counterexample rests on it: this row "
-                     "may continue from the right result";
+      return label + " " + it->second + ", and the counterexample rests on it: this row may continue from the "
+                     "right result";
   }
   return "";
 }
@@ -219,6 +221,14 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
     return "the sides agree wherever both are defined, and they need different conditions (" + r.verdict.detail +
            ")";
   if (std::string unset = unset_name(refs); !unset.empty()) return unset;
+  // `a = \alpha r` after `m a = m g\sin\beta - f` and `f r = I\alpha`: the rows leave the
+  // subject free (the counterexample chose its value), so the row adds a relation they do not
+  // make, a law or a condition as likely as a slip
+  if (const std::string x = set_name(s_); !x.empty())
+    for (const auto& [name, value] : r.verdict.point)
+      if (name == x)
+        return "the rows leave '" + x + "' free (the counterexample chooses it), so this row may state a law "
+               "or a condition about it that they do not";
   // `ΔT = …` against an earlier display's `ΔT = …`: documents reuse a name for the quantity
   // of the next case (the energy lost in an inelastic impact, then in any impact)
   const Node& subject = s_.claim.sides.front();

@@ -513,10 +513,9 @@ void DocumentReader::build_steps() {
         if (it->section == section && subset(it->conditions, locals))
           dr.nearby.push_back(it->label);
       // the text on both sides: "… where the higher-order term was neglected" follows the display
+      // (the sentences that lead into the display, and the one that continues it)
       dr.hint = hint_of(disp.prose_before);
-      if (r.display + 1 < doc_.displays.size())
-        dr.hint += " " + hint_of(doc_.displays[r.display + 1].prose_before.substr(
-                             0, std::min<std::size_t>(300, doc_.displays[r.display + 1].prose_before.size())));
+      if (r.display + 1 < doc_.displays.size()) dr.hint += " " + continuation_of(doc_.displays[r.display + 1].prose_before);
       dr.not_read = vector_problem(l);
       for (const auto& v : r.vectors) dr.vectors.push_back(v);
       for (const auto& rd : r.tex.readings) s.notes.push_back(rd.message);
@@ -589,9 +588,41 @@ std::vector<std::string> DocumentReader::tags_in(const std::string& prose) {
 }
 
 std::string DocumentReader::hint_of(const std::string& prose) {
-  std::string tail = prose.size() > 400 ? prose.substr(prose.size() - 400) : prose;
+  // the last two sentences of the last paragraph ("m_2 can be considered infinite. This gives:")
+  std::size_t from = 0;
+  const std::size_t para = prose.rfind("\n\n", prose.find_last_not_of(" \t\n"));
+  if (para != std::string::npos) from = para + 2;
+  int stops = 0;
+  for (std::size_t i = prose.size(); i-- > from + 1;) {
+    const char c = prose[i - 1];
+    if ((c == '.' || c == '!' || c == '?') && std::isspace(static_cast<unsigned char>(prose[i])) &&
+        prose.find_first_not_of(" \t\n", i) != std::string::npos && ++stops == 2) {
+      from = i;
+      break;
+    }
+  }
+  std::string tail = prose.substr(from);
+  if (tail.size() > 400) tail = tail.substr(tail.size() - 400);
   for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return tail;
+}
+
+// The text after a display when it continues the display's sentence ("where the higher-order
+// term was neglected"): up to its first full stop. A new sentence or paragraph is the next
+// display's business.
+std::string DocumentReader::continuation_of(const std::string& prose) {
+  const std::size_t b = prose.find_first_not_of(" \t\n");
+  if (b == std::string::npos || !std::islower(static_cast<unsigned char>(prose[b]))) return "";
+  std::size_t e = prose.size();
+  for (std::size_t i = b; i + 1 < prose.size(); ++i)
+    if ((prose[i] == '.' && std::isspace(static_cast<unsigned char>(prose[i + 1]))) ||
+        (prose[i] == '\n' && prose[i + 1] == '\n')) {
+      e = i;
+      break;
+    }
+  std::string out = prose.substr(b, std::min<std::size_t>(e - b, 400));
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
 }
 
 // Every name the steps use, declared real (unless a directive declared it); the functions

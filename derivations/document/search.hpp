@@ -3,6 +3,7 @@
 // of rows), justify_rules.cpp (the rules other than rewrite it tries: a limit, solve, first
 // order) and justify_doubts.cpp (when a counterexample is no evidence against the author).
 #pragma once
+#include <ctime>
 #include <functional>
 #include <map>
 #include <memory>
@@ -29,8 +30,9 @@ bool prose_names_a_regime(const std::string& hint);
 
 class Search {
  public:
-  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false)
-      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested) {}
+  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false,
+         std::clock_t started = std::clock())
+      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested), started_(started) {}
 
   StepResult run();
 
@@ -88,7 +90,7 @@ class Search {
   // it garbles pin a quantity to a special value, and from that anything about it follows
   // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
   // is not a given is searched for itself (one level deep), and a refuted one voids the proof.
-  bool rests_on_a_slip(const std::vector<std::string>& refs) const;
+  bool rests_on_a_slip(const std::vector<std::string>& refs, std::vector<std::string>* slips = nullptr) const;
 
   // A condition the text stated earlier in the section (`$T_1 = T_2$`), not in force here by the
   // reader's rule, under which the row follows from the same rows: the author may still mean it.
@@ -147,11 +149,18 @@ class Search {
   const Step& s_;
   const DocumentRow& row_;
   const ProveOptions& opt_;
+  mutable std::map<std::string, bool> refuted_;   // label -> refuted by its own (nested) search
   std::map<std::string, std::string> trusted_;   // label -> "" (a given or derived) or why not
   std::unique_ptr<Derivation> positive_;   // d_ with every undeclared name positive (made when needed)
   std::vector<std::string> new_names_;
   std::vector<std::string> tried_;
   bool nested_ = false;
+  // The CPU time the search began (a nested search: its parent's). Past kSoftSeconds the
+  // search tries nothing more that could prove, and a counterexample it has not finished
+  // checking is no evidence: the step's budget (default 2 s) must not end it unanswered.
+  std::clock_t started_;
+  static constexpr double kSoftSeconds = 1.2;
+  bool late() const { return static_cast<double>(std::clock() - started_) > kSoftSeconds * CLOCKS_PER_SEC; }
 };
 
 }  // namespace dc::document_detail

@@ -160,17 +160,6 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
     v = prove_equal(ra, rb, c.d.symbols, c.opt);
     if (v.kind != VerdictKind::Refuted) break;
     Gap gap = counterexample_gap(c, red, eqs, v);
-    // a point whose eliminated quantities leave their declared domain (c < 0 for a positive
-    // c): other points of the same reduction may stay inside it (fixed seeds: deterministic)
-    for (int k = 1; k <= 8 && gap.why.find("outside its domain") != std::string::npos; ++k) {
-      ProveOptions o = c.opt;
-      o.seed = c.opt.seed + 104729u * static_cast<unsigned>(k);
-      Verdict w = prove_equal(ra, rb, c.d.symbols, o);
-      if (w.kind != VerdictKind::Refuted) break;
-      Gap g = counterexample_gap(c, red, eqs, w);
-      if (g.why.empty()) v = w;
-      gap = g;
-    }
     if (gap.why.empty()) break;
     if (gap.elimination && attempt < 4) {
       // That choice banned; when the same quantity is eliminated again (the references hold at
@@ -183,6 +172,19 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
         for (int i = 0; i < static_cast<int>(eqs.size()); ++i) added = bans.insert({i, key}).second || added;
       if (added) continue;
     }
+    // no other elimination left, and the point's eliminated quantities leave their declared
+    // domain (c < 0 for a positive c): other points of the same reduction may stay inside it
+    // (fixed seeds: deterministic)
+    for (int k = 1; k <= 8 && gap.why.find("outside its domain") != std::string::npos; ++k) {
+      ProveOptions o = c.opt;
+      o.seed = c.opt.seed + 104729u * static_cast<unsigned>(k);
+      Verdict w = prove_equal(ra, rb, c.d.symbols, o);
+      if (w.kind != VerdictKind::Refuted) break;
+      Gap g = counterexample_gap(c, red, eqs, w);
+      if (g.why.empty()) v = w;
+      gap = g;
+    }
+    if (gap.why.empty()) break;
     std::string after = red.eliminated.empty() ? "" : " after eliminating " + eliminated_text(c, red);
     Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
     u.residual = c.text(ra - rb);
