@@ -182,6 +182,10 @@ StepResult Search::run() {
       else
         evidence = pos;
     }
+    if (doubt.empty()) {
+      const StepResult chosen = evidence;
+      doubt = free_subject(chosen, refs, evidence);
+    }
     if (doubt.empty()) doubt = untrusted_row(refs);
     if (doubt.empty()) doubt = earlier_condition(refs);
     if (doubt.empty()) {

@@ -10,12 +10,61 @@ namespace dc::document_detail {
 
 // A condition the text stated earlier in the section (`$T_1 = T_2$`), not in force here by the
 // reader's rule, under which the row follows from the same rows: the author may still mean it.
+// `a = \alpha r` after `m a = m g\sin\beta - f` and `f r = I\alpha`: the counterexample chose
+// the subject's value, so the rows may leave it free, and the row adds a relation they do not
+// make: a law or a condition as likely as a slip. Unless solving the rows for it (the names
+// they have and the row has not eliminated) shows that they determine it, and the row's value
+// is not theirs: then `evidence` holds that refutation.
+std::string Search::free_subject(const StepResult& r, const std::vector<std::string>& refs, StepResult& evidence) {
+  const std::string x = set_name(s_);
+  if (x.empty() || s_.claim.sides.front().kind != NodeKind::Symbol) return "";
+  bool chosen = false;
+  for (const auto& [name, value] : r.verdict.point) chosen = chosen || name == x;
+  if (!chosen) return "";
+  const std::string doubt = "the rows leave '" + x + "' free (the counterexample chooses it), so this row may "
+                            "state a law or a condition about it that they do not";
+  if (late()) return doubt;
+  // a display that lists a system (`m a = …`, `f r = I\alpha`, `a = \alpha r`): a row of it
+  // against the rows before it in the same display is one more equation of the system
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline" &&
+                                         st->document_row->display == row_.display && st->document_row->link <= 1)
+      return doubt;
+  std::set<std::string> mine, theirs, chosen_names;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& [name, value] : r.verdict.point) chosen_names.insert(name);
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline")
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+  RuleSpec rule;
+  rule.name = rule.written_name = "solve";
+  for (const auto& label : refs) rule.refs.push_back(label_arg(label));
+  rule.unknowns.push_back(node_arg(s_.claim.sides.front(), RuleArg::Kind::Symbol));
+  for (const auto& n : theirs) {   // the names the rows determine (the rewrite eliminated them)
+    const SymbolInfo* info = d_.symbols.find(n);
+    if (mine.count(n) || chosen_names.count(n) || !info || info->is_function) continue;
+    Node y;
+    y.kind = NodeKind::Symbol;
+    y.text = n;
+    y.pos = s_.claim_pos;
+    rule.unknowns.push_back(node_arg(y, RuleArg::Kind::Symbol));
+  }
+  StepResult s = attempt_rule(rule);
+  const Verdict& v = s.verdict;
+  if (!usable(s) || v.kind != VerdictKind::Refuted || side_condition_only(v) ||
+      v.detail.find("do not determine") != std::string::npos || v.reason.find("do not determine") != std::string::npos)
+    return doubt;
+  if (v.method.rfind("lsolve", 0) != 0 && v.method.rfind("claim substituted back", 0) != 0) return doubt;
+  evidence = s;
+  return "";
+}
+
 std::string Search::earlier_condition(const std::vector<std::string>& refs) {
   std::set<std::string> mine;
   for (const auto& side : s_.claim.sides) names_of(side, mine);
   for (const auto& label : row_.earlier) {
     const Step* st = d_.find(label);
-    if (!st) continue;
+    if (!st || !st->document_row || row_.display - st->document_row->display > 3) continue;   // a few displays back
     std::set<std::string> theirs;
     for (const auto& side : st->claim.sides) names_of(side, theirs);
     bool shared = false;
@@ -221,18 +270,13 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
     return "the sides agree wherever both are defined, and they need different conditions (" + r.verdict.detail +
            ")";
   if (std::string unset = unset_name(refs); !unset.empty()) return unset;
-  // `a = \alpha r` after `m a = m g\sin\beta - f` and `f r = I\alpha`: the rows leave the
-  // subject free (the counterexample chose its value), so the row adds a relation they do not
-  // make, a law or a condition as likely as a slip
-  if (const std::string x = set_name(s_); !x.empty())
-    for (const auto& [name, value] : r.verdict.point)
-      if (name == x)
-        return "the rows leave '" + x + "' free (the counterexample chooses it), so this row may state a law "
-               "or a condition about it that they do not";
   // `ΔT = …` against an earlier display's `ΔT = …`: documents reuse a name for the quantity
   // of the next case (the energy lost in an inelastic impact, then in any impact)
   const Node& subject = s_.claim.sides.front();
-  if (subject.kind == NodeKind::Symbol || subject.kind == NodeKind::Call)
+  // (not when the text says the row substitutes into the rows before it: the same quantity)
+  const bool substitutes = row_.hint.find("substitut") != std::string::npos ||
+                           row_.hint.find("insert") != std::string::npos || row_.hint.find("plug") != std::string::npos;
+  if ((subject.kind == NodeKind::Symbol || subject.kind == NodeKind::Call) && !substitutes)
     for (const auto& label : refs) {
       const Step* st = d_.find(label);
       if (!st || !st->document_row || st->document_row->display == row_.display) continue;

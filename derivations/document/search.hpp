@@ -95,6 +95,7 @@ class Search {
   // A condition the text stated earlier in the section (`$T_1 = T_2$`), not in force here by the
   // reader's rule, under which the row follows from the same rows: the author may still mean it.
   std::string earlier_condition(const std::vector<std::string>& refs);
+  std::string free_subject(const StepResult& r, const std::vector<std::string>& refs, StepResult& evidence);
 
   // A refutation against a row that its own search refutes is a refutation against the slip
   // before it: the author's later rows continue from the right result. Each row of the set is
