@@ -183,18 +183,18 @@ StepResult Search::run() {
         evidence = pos;
     }
     if (doubt.empty()) {
-      const StepResult chosen = evidence;
-      doubt = free_subject(chosen, refs, evidence);
-    }
-    if (doubt.empty()) doubt = untrusted_row(refs);
-    if (doubt.empty()) doubt = earlier_condition(refs);
-    if (doubt.empty()) {
       // the rows give only cos(theta) (or v^2, |v|): the row's choice of root is no slip,
       // but a slip in what the rows do give is one
       std::optional<StepResult> wrapped;
       doubt = branch_doubt(refs, wrapped);
       if (wrapped) return found(*wrapped, "rewrite", refs);
     }
+    if (doubt.empty()) {
+      const StepResult chosen = evidence;
+      doubt = free_subject(chosen, refs, evidence);
+    }
+    if (doubt.empty()) doubt = untrusted_row(refs);
+    if (doubt.empty()) doubt = earlier_condition(refs);
     if (doubt.empty()) return found(evidence, "rewrite", refs);
     // the reason shown: the first that names a declaration deciding it, else the first
     const bool names_declaration = doubt.find("declar") != std::string::npos;

@@ -515,7 +515,13 @@ void DocumentReader::build_steps() {
       // the text on both sides: "… where the higher-order term was neglected" follows the display
       // (the sentences that lead into the display, and the one that continues it)
       dr.hint = hint_of(disp.prose_before);
-      if (r.display + 1 < doc_.displays.size()) dr.hint += " " + continuation_of(doc_.displays[r.display + 1].prose_before);
+      {
+        const std::size_t after_end = r.display + 1 < doc_.displays.size()
+                                          ? offset_of(doc_.displays[r.display + 1].pos)
+                                          : doc_.source.text.size();
+        if (after_end > disp.end)
+          dr.hint += " " + continuation_of(doc_.source.text.substr(disp.end, after_end - disp.end));
+      }
       dr.not_read = vector_problem(l);
       for (const auto& v : r.vectors) dr.vectors.push_back(v);
       for (const auto& rd : r.tex.readings) s.notes.push_back(rd.message);

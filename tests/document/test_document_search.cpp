@@ -1,0 +1,122 @@
+// The justification search beyond rewrite (derivations/document/justify_rules.cpp) and the
+// doubts that keep a counterexample from refuting what the author did not mean
+// (justify_doubts.cpp), each on a short document written for it.
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+#include "derivations/document/document.hpp"
+
+namespace {
+
+struct Row {
+  int line = 0;
+  int link = 0;
+  std::string verdict;
+  std::string rule;
+  std::string reason;
+};
+
+std::vector<Row> check(const std::string& text) {
+  dc::Derivation d = dc::read_document(dc::SourceText{"search.md", text});
+  std::vector<Row> out;
+  for (const auto& s : d.steps) {
+    if (s.document_row && s.document_row->relation == "inline") continue;
+    dc::StepResult r = dc::check_any_step(d, s);
+    out.push_back({s.pos.line, s.document_row ? s.document_row->link : 0,
+                   r.premise && r.verdict.holds() ? "premise" : dc::to_string(r.verdict.kind), r.found_rule,
+                   r.verdict.reason});
+  }
+  return out;
+}
+
+const Row& at(const std::vector<Row>& rows, int line, int link = 0) {
+  for (const auto& r : rows)
+    if (r.line == line && r.link == link) return r;
+  FAIL("no row at line " << line << " link " << link);
+  return rows.front();
+}
+
+}  // namespace
+
+TEST_CASE("document search: a limit the row takes of an earlier row's expression") {
+  auto rows = check("$$w = \\frac{(a - b) u}{a + b}$$\n"                                      // 1
+                    "\n"
+                    "For a very heavy second body:\n"
+                    "\n"
+                    "$$w = \\lim_{b \\to \\infty} \\frac{(a - b) u}{a + b} = -u$$\n");           // 5
+  CHECK(at(rows, 5, 1).verdict == "proved");
+  CHECK(at(rows, 5, 1).rule.rfind("limit b -> oo", 0) == 0);
+  CHECK(at(rows, 5, 2).verdict == "proved");
+}
+
+TEST_CASE("document search: an approximate row in the regime the text states") {
+  const std::string doc = "$$y = \\frac{x + k}{x + 1} u$$\n"                                 // 1
+                          "\n"
+                          "When $x \\approx 0$ this is\n"
+                          "\n";
+  CHECK(at(check(doc + "$$y \\approx k u$$\n"), 5).verdict == "proved");
+  // the wrong leading term is never refuted (an approximate row), but it is not derived either
+  CHECK(at(check(doc + "$$y \\approx 2 k u$$\n"), 5).verdict == "undecided");
+}
+
+TEST_CASE("document search: the 'where' clause after a display defines its names") {
+  auto rows = check("$$p = m v$$\n"                                                           // 1
+                    "\n"
+                    "$$p = \\frac{M}{2} v$$ where $m = M/2$ is half the total.\n");            // 3
+  CHECK(at(rows, 3).verdict == "proved");
+}
+
+TEST_CASE("document search: 'neglect D' in the text is a condition D = 0 of the next display") {
+  auto rows = check("$$F - D - m g = m a$$\n"                                                  // 1
+                    "\n"
+                    "Now neglect D and write\n"
+                    "\n"
+                    "$$m a = F - m g$$\n");                                                    // 5
+  CHECK(at(rows, 5).verdict == "proved");
+}
+
+TEST_CASE("document search: first order in the Delta quantities when the text neglects the rest") {
+  auto rows = check("$$\\Delta p = (m - \\Delta m)(v + \\Delta v) - m v = m \\Delta v - v \\Delta m$$\n"   // 1
+                    "\n"
+                    "where the higher-order term was neglected.\n");
+  CHECK(at(rows, 1, 2).verdict == "proved");
+  CHECK(at(rows, 1, 2).rule.rfind("first_order", 0) == 0);
+}
+
+TEST_CASE("document search: a root the row chooses is undecided, naming the declaration, and a slip in it is refuted") {
+  const std::string doc = "$$h = L (1 - \\cos\\theta)$$\n"   // 1
+                          "\n"
+                          "and therefore\n"
+                          "\n";
+  auto right = check(doc + "$$\\theta = \\arccos\\left(1 - \\frac{h}{L}\\right)$$\n");
+  CHECK(at(right, 5).verdict == "undecided");
+  CHECK(at(right, 5).reason.find("0 <= theta <= pi") != std::string::npos);
+  auto slip = check(doc + "$$\\theta = \\arccos\\left(1 - \\frac{2 h}{L}\\right)$$\n");
+  CHECK(at(slip, 5).verdict == "refuted");
+}
+
+TEST_CASE("document search: one more equation of a system listed in one display is not refuted") {
+  auto rows = check("Newton's law, the torque and the rolling condition give\n"   // 1
+                    "\n"
+                    "$$\\begin{aligned}\n"                                          // 3
+                    "m a &= m g \\sin\\beta - f \\\\\n"                              // 4
+                    "f r &= I \\alpha \\\\\n"                                       // 5
+                    "a &= \\alpha r\n"                                              // 6
+                    "\\end{aligned}$$\n");
+  CHECK(at(rows, 6).verdict != "refuted");
+}
+
+TEST_CASE("document search: a condition stated a paragraph earlier still counts against a refutation") {
+  auto rows = check("$$p_1 V_1 = n R T_1$$\n"                                        // 1
+                    "\n"
+                    "The bath keeps the temperature fixed, $T_2 = T_1$, while the gas expands.\n"
+                    "\n"
+                    "$$W = n R T_1 \\ln(V_2/V_1)$$\n"                                // 5
+                    "\n"
+                    "The heat supplied is the same. At the end\n"
+                    "\n"
+                    "$$p_2 V_2 = n R T_2 = p_1 V_1$$\n");                             // 9
+  CHECK(at(rows, 9, 2).verdict != "refuted");
+}
