@@ -301,16 +301,24 @@ StepResult Search::attempt_rule(RuleSpec rule, const Relation* claim, const Deri
 
 // The names of the claim that no earlier step mentions.
 bool Search::introduces_names() {
+  new_names_ = new_names_of(s_);
+  return !new_names_.empty();
+}
+
+// The names of step `s` that no step before it mentions (a row that was not read mentions
+// nothing).
+std::vector<std::string> Search::new_names_of(const Step& s) const {
   std::set<std::string> mine, before;
-  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  for (const auto& side : s.claim.sides) names_of(side, mine);
   for (const auto& st : d_.steps) {
-    if (&st == &s_) break;
+    if (&st == &s) break;
     if (st.document_row && !st.document_row->not_read.empty() && st.document_row->relation != "inline") continue;
     for (const auto& side : st.claim.sides) names_of(side, before);
   }
+  std::vector<std::string> out;
   for (const auto& n : mine)
-    if (!before.count(n)) new_names_.push_back(n);
-  return !new_names_.empty();
+    if (!before.count(n)) out.push_back(n);
+  return out;
 }
 
 // Small sets first: what the author cites, then the nearest rows, then more of them; the

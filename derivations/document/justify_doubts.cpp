@@ -24,12 +24,6 @@ std::string Search::free_subject(const StepResult& r, const std::vector<std::str
   const std::string doubt = "the rows leave '" + x + "' free (the counterexample chooses it), so this row may "
                             "state a law or a condition about it that they do not";
   if (late()) return doubt;
-  // a display that lists a system (`m a = …`, `f r = I\alpha`, `a = \alpha r`): a row of it
-  // against the rows before it in the same display is one more equation of the system
-  for (const auto& label : refs)
-    if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline" &&
-                                         st->document_row->display == row_.display && st->document_row->link <= 1)
-      return doubt;
   std::set<std::string> mine, theirs, chosen_names;
   for (const auto& side : s_.claim.sides) names_of(side, mine);
   for (const auto& [name, value] : r.verdict.point) chosen_names.insert(name);
@@ -270,6 +264,38 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
     return "the sides agree wherever both are defined, and they need different conditions (" + r.verdict.detail +
            ")";
   if (std::string unset = unset_name(refs); !unset.empty()) return unset;
+  {   // `\sum_i^n p_i` read as one quantity: linearity, the terms, the index are not seen
+    std::set<std::string> mine;
+    for (const auto& side : s_.claim.sides) names_of(side, mine);
+    for (const auto& n : mine)
+      if (n.rfind("Sum_", 0) == 0)
+        return "the row has a sum over an index it does not count out, read as one quantity (" + n +
+               "): its terms are not seen";
+  }
+  // a display that lists a system (`m a = …`, `f r = I\alpha`, `a = \alpha r`) or a chain that
+  // names its quantities and then states a law (`\Delta p = p_p + p_c = m_p v_p - m_c v_c = 0`):
+  // against rows before it in the same display that introduced names (givens), the row may be
+  // one more equation of the system rather than a consequence of it
+  for (const auto& label : refs) {
+    const Step* st = d_.find(label);
+    if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+    if (st->document_row->display == row_.display && !new_names_of(*st).empty())
+      return "the counterexample rests on " + label + ", a given of this same display, so the row may be one "
+             "more law of the system it lists";
+  }
+  // `… = m_p v_p - m_c v_c = 0` after links that only name the sum: the counterexample chose
+  // every name of the row freely, so the rows relate none of them, and the row adds a
+  // relation among them (a conservation law) as likely as a slip
+  {
+    std::set<std::string> mine, chosen;
+    for (const auto& side : s_.claim.sides) names_of(side, mine);
+    for (const auto& [name, value] : r.verdict.point) chosen.insert(name);
+    bool all_chosen = !mine.empty() && !r.verdict.point.empty();
+    for (const auto& n : mine) all_chosen = all_chosen && chosen.count(n);
+    if (all_chosen)
+      return "the rows relate none of the row's names (the counterexample chooses them all), so the row may "
+             "state a law about them";
+  }
   // `ΔT = …` against an earlier display's `ΔT = …`: documents reuse a name for the quantity
   // of the next case (the energy lost in an inelastic impact, then in any impact)
   const Node& subject = s_.claim.sides.front();

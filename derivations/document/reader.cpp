@@ -478,10 +478,11 @@ void DocumentReader::build_steps() {
     auto vector_problem = [&](const Link& l) -> std::string {
       if (r.vectors.empty()) return "";
       const int a = vector_degree(l.lhs, r.vectors), b = vector_degree(l.rhs, r.vectors);
-      const bool ok = a >= 0 && b >= 0 &&
-                      (a == b || (a == 1 && is_zero_literal(l.rhs)) || (b == 1 && is_zero_literal(l.lhs)));
+      // (a vector beside a scalar expression, `\sum \mathbf{F} = m\dot v + \dot m u`, is the
+      // author's component along the motion: read as that scalar relation)
+      const bool ok = a >= 0 && b >= 0;
       return ok ? "" : "a vector relation that is not linear in the vectors (a product of vectors, |v|, a "
-                       "vector beside a scalar) is not read yet";
+                       "vector added to a scalar) is not read yet";
     };
     std::vector<std::string> this_row;
     std::map<std::size_t, std::vector<std::string>> chain_labels;

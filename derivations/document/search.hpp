@@ -81,6 +81,7 @@ class Search {
 
   // The names of the claim that no earlier step mentions.
   bool introduces_names();
+  std::vector<std::string> new_names_of(const Step& s) const;
 
   // Small sets first: what the author cites, then the nearest rows, then more of them; the
   // inline givens in force join every set.

@@ -1,6 +1,8 @@
 // The atoms of TeX math: numbers, groups, |x|, \frac (and derivatives written as fractions),
 // \sqrt, functions, \int, \lim, finite \sum and \prod, evaluation bars, \mathrm{..} names.
 #include <algorithm>
+#include <cctype>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -444,6 +446,35 @@ Parsed Parser::big_operator(const Token& cs) {
     (low ? has_lo : has_hi) = true;
   }
   const std::string what = cs.text == "sum" ? "a sum" : "a product";
+  // `\sum \mathbf{F}`, `\sum_i^n m_i v_i`: a sum over an index the row does not count out is
+  // one quantity, named after its terms (Sum_m_i_v_i), a vector when its terms are; the rows
+  // that use it are restatements or laws about it (document/justify never refutes them)
+  auto opaque_sum = [&]() {
+    if (!starts_factor(peek())) fail(peek(), "expected the terms of the sum, found " + describe(peek()));
+    Parsed t = term(false);
+    std::string name = "Sum_";
+    bool vector = false;
+    std::function<void(const Node&)> visit = [&](const Node& n) {
+      if (n.kind == NodeKind::Symbol && row_.vector_names.count(n.text)) vector = true;
+      for (const auto& a : n.args) visit(a);
+    };
+    visit(t.node);
+    for (char c : to_text(t.node)) {
+      const bool word = std::isalnum(static_cast<unsigned char>(c)) != 0;
+      if (word) name += c;
+      else if (name.back() != '_') name += '_';
+    }
+    while (name.size() > 4 && name.back() == '_') name.pop_back();
+    if (name.size() <= 4) fail(cs, what + " of nothing is not read");
+    if (vector) row_.vector_names.insert(name);
+    --nest_;
+    Parsed out = symbol(name, cs);
+    out.end = t.end;
+    out.end_line = t.end_line;
+    out.node.pos = at(cs);
+    return out;
+  };
+  if ((!has_lo || !has_hi) && cs.text == "sum") return opaque_sum();
   if (!has_lo || !has_hi) fail(cs, what + " without both bounds (\\" + cs.text + "_{i=1}^{3}) is not read yet");
   auto integer = [&](std::size_t b, std::size_t e, long& v) {
     if (b >= e || e - b > 4) return false;
@@ -457,6 +488,7 @@ Parsed Parser::big_operator(const Token& cs) {
   };
   long lo = 0, hi = 0;
   bool ok = le >= lb + 3 && letter(toks_[lb]) && toks_[lb + 1].is('=') && integer(lb + 2, le, lo) && integer(hb, he, hi);
+  if (!ok && cs.text == "sum") return opaque_sum();
   if (!ok) fail(cs, what + " with symbolic bounds is not read yet (only numbers: \\" + cs.text + "_{i=1}^{3})");
   if (hi < lo || hi - lo >= 100) fail(cs, what + " of more than 100 terms, or of none, is not read yet");
   const std::string index = toks_[lb].text;
