@@ -168,7 +168,7 @@ StepResult Search::run() {
     }
     std::string doubt = reading_in_doubt(r, refs);
     if (doubt.empty() && late())
-      doubt = "the search ran out of its time before it could check that the reading of the row is not in doubt";
+      doubt = "the search used up its tries before it could check that the reading of the row is not in doubt";
     StepResult evidence = r;
     if (doubt.empty()) {
       // the document declares no signs: a counterexample at a negative mass or length is no
@@ -282,6 +282,7 @@ StepResult Search::attempt_rule(RuleSpec rule, const Relation* claim, const Deri
   rule.pos = s_.claim_pos;
   t.rule = std::move(rule);
   try {
+    ++*work_;
     StepResult r = check_step(on ? *on : d_, t, opt_);
     r.step = &s_;
     return r;
@@ -372,6 +373,19 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
     if (relevant.size() >= n - 1)
       add(with_locals(std::vector<std::string>(relevant.begin(),
                                                relevant.begin() + static_cast<long>(std::min(n, relevant.size())))));
+  // the most relevant row with the other links of its chain (`F = m a = m dv/dt = d(mv)/dt =
+  // dp/dt` is one statement; a later `dp/dt = F` uses all of it)
+  if (!relevant.empty()) {
+    std::vector<std::string> chain;
+    const Step* top = d_.find(relevant.front());
+    for (const auto& st : d_.steps) {
+      if (&st == &s_) break;
+      if (top && st.document_row && st.document_row->relation != "inline" && st.pos.line == top->pos.line &&
+          st.document_row->display == top->document_row->display)
+        chain.push_back(st.label);
+    }
+    if (chain.size() > 1) add(with_locals(chain));
+  }
   // (no wider set: the more rows, the likelier two of them — a slip and the row it garbles —
   // pin a quantity to a special value from which anything about it follows)
   return out;
@@ -394,7 +408,7 @@ bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<s
     if (late()) return true;   // not checked in time: no proof rests on it
     auto it = refuted_.find(label);
     if (it == refuted_.end())
-      it = refuted_.emplace(label, Search(d_, *st, opt_, true, started_).run().verdict.kind == VerdictKind::Refuted).first;
+      it = refuted_.emplace(label, Search(d_, *st, opt_, true, work_).run().verdict.kind == VerdictKind::Refuted).first;
     if (late()) return true;
     if (it->second) {
       any = true;
@@ -421,6 +435,9 @@ bool Search::in_force(const Step& st) const {
 std::vector<std::string> Search::most_relevant() const {
   std::set<std::string> mine;
   for (const auto& side : s_.claim.sides) names_of(side, mine);
+  // the variable of the row's functions (t in dp/dt) says nothing about which rows it uses
+  for (const auto& n : std::set<std::string>(mine))
+    if (const std::size_t of = n.find("__of_"); of != std::string::npos) mine.erase(n.substr(of + 5));
   std::vector<std::pair<int, std::size_t>> scored;   // (-score, -index)
   std::size_t index = 0;
   for (const auto& st : d_.steps) {

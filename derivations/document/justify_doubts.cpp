@@ -84,9 +84,9 @@ std::string Search::untrusted_row(const std::vector<std::string>& refs) {
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
     auto it = trusted_.find(label);
     if (it == trusted_.end()) {
-      StepResult own = Search(d_, *st, opt_, true, started_).run();
+      StepResult own = Search(d_, *st, opt_, true, work_).run();
       const std::string why = own.verdict.kind == VerdictKind::Refuted ? "is itself refuted by its own search"
-                              : late()                                 ? "could not be checked in time itself"
+                              : late()                                 ? "could not be checked itself within the search's tries"
                                                                        : "";
       it = trusted_.emplace(label, why).first;
     }

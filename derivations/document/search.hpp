@@ -3,7 +3,6 @@
 // of rows), justify_rules.cpp (the rules other than rewrite it tries: a limit, solve, first
 // order) and justify_doubts.cpp (when a counterexample is no evidence against the author).
 #pragma once
-#include <ctime>
 #include <functional>
 #include <map>
 #include <memory>
@@ -30,9 +29,8 @@ bool prose_names_a_regime(const std::string& hint);
 
 class Search {
  public:
-  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false,
-         std::clock_t started = std::clock())
-      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested), started_(started) {}
+  Search(const Derivation& d, const Step& s, const ProveOptions& opt, bool nested = false, int* work = nullptr)
+      : d_(d), s_(s), row_(*s.document_row), opt_(opt), nested_(nested), work_(work ? work : &own_work_) {}
 
   StepResult run();
 
@@ -157,12 +155,14 @@ class Search {
   std::vector<std::string> new_names_;
   std::vector<std::string> tried_;
   bool nested_ = false;
-  // The CPU time the search began (a nested search: its parent's). Past kSoftSeconds the
+  // The rules tried so far (a nested search counts into its parent's). Past kMaxWork the
   // search tries nothing more that could prove, and a counterexample it has not finished
-  // checking is no evidence: the step's budget (default 2 s) must not end it unanswered.
-  std::clock_t started_;
-  static constexpr double kSoftSeconds = 1.2;
-  bool late() const { return static_cast<double>(std::clock() - started_) > kSoftSeconds * CLOCKS_PER_SEC; }
+  // checking is no evidence: a count, not a clock, so the verdict is the same on any machine
+  // and at any --jobs, and the step stays inside its budget (default 2 s).
+  int own_work_ = 0;
+  int* work_;
+  static constexpr int kMaxWork = 60;
+  bool late() const { return *work_ >= kMaxWork; }
 };
 
 }  // namespace dc::document_detail
