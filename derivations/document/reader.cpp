@@ -357,6 +357,7 @@ void DocumentReader::mark_functions_and_vectors() {
             functions[r.display][x.args[0].text] = x.args[1].text;
         });
   }
+  read_differentials(functions);
   for (auto& r : rows_) {
     auto fit = functions.find(r.display);
     for (auto& ch : r.tex.chains)
@@ -367,6 +368,86 @@ void DocumentReader::mark_functions_and_vectors() {
   }
   for (const auto& [k, names] : functions)
     for (const auto& [name, var] : names) function_vars_[function_id(name, var)] = var;
+}
+
+// `dv = -u_e\,dm_r/m_r - g\,dt` in a display whose other rows differentiate with respect to t:
+// every term of each side holds exactly one differential, so the row divided by dt says
+// dv/dt = -u_e (dm_r/dt)/m_r - g, and it is read as that (v, m_r functions of t there). A
+// row whose terms do not each hold one differential, or a display without its variable, is
+// not read.
+void DocumentReader::read_differentials(std::map<std::size_t, std::map<std::string, std::string>>& functions) {
+  // the degree in differentials of a side: 0 none, 1 one in every term, -1 anything else
+  std::function<int(const Node&)> degree = [&](const Node& n) -> int {
+    switch (n.kind) {
+      case NodeKind::Call:
+        if (n.text == "differential") return 1;
+        for (const auto& a : n.args)
+          if (degree(a) != 0) return -1;
+        return 0;
+      case NodeKind::Add:
+      case NodeKind::Sub: {
+        const int a = degree(n.args[0]), b = degree(n.args[1]);
+        return a == b ? a : -1;
+      }
+      case NodeKind::Neg: return degree(n.args[0]);
+      case NodeKind::Mul: {
+        const int a = degree(n.args[0]), b = degree(n.args[1]);
+        return a < 0 || b < 0 || a + b > 1 ? -1 : a + b;
+      }
+      case NodeKind::Div: {
+        const int a = degree(n.args[0]), b = degree(n.args[1]);
+        return a < 0 || b != 0 ? -1 : a;
+      }
+      case NodeKind::Pow: return degree(n.args[0]) == 0 && degree(n.args[1]) == 0 ? 0 : -1;
+      default: {
+        for (const auto& a : n.args)
+          if (degree(a) != 0) return -1;
+        return 0;
+      }
+    }
+  };
+  auto has_differential = [&](const Node& n) {
+    bool found = false;
+    walk(n, [&](const Node& x) { found = found || (x.kind == NodeKind::Call && x.text == "differential"); });
+    return found;
+  };
+  for (auto& r : rows_) {
+    if (!r.not_read.empty()) continue;
+    bool any = false;
+    for (const auto& ch : r.tex.chains)
+      for (const auto& side : ch.sides) any = any || has_differential(side);
+    if (!any) continue;
+    const std::string not_read =
+        "a differential (dv) outside a derivative or an integral is read only when every term of the row holds one "
+        "and the display differentiates with respect to the variable (dv/dt)";
+    std::set<std::string> vars;
+    for (const auto& [name, var] : functions[r.display]) vars.insert(var);
+    bool ok = vars.size() == 1;
+    for (const auto& ch : r.tex.chains)
+      for (const auto& side : ch.sides) ok = ok && (degree(side) == 1 || is_zero_literal(side));
+    if (!ok) {
+      r.not_read = not_read;
+      r.not_read_pos = r.row->origin;
+      continue;
+    }
+    const std::string var = *vars.begin();
+    for (auto& ch : r.tex.chains)
+      for (auto& side : ch.sides)
+        walk(side, [&](Node& x) {
+          if (x.kind != NodeKind::Call || x.text != "differential" || x.args.size() != 1) return;
+          if (x.args[0].kind == NodeKind::Symbol && x.args[0].text == var) {
+            x = Node{NodeKind::Number, "1", {}, x.pos};
+            return;
+          }
+          if (x.args[0].kind == NodeKind::Symbol) functions[r.display][x.args[0].text] = var;
+          Node v;
+          v.kind = NodeKind::Symbol;
+          v.text = var;
+          v.pos = x.pos;
+          x.text = "diff";
+          x.args.push_back(v);
+        });
+  }
 }
 
 std::string DocumentReader::function_id(const std::string& name, const std::string& var) {

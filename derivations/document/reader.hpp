@@ -82,6 +82,7 @@ class DocumentReader {
   void mark_integrands_through_definitions();
 
   void mark_functions_and_vectors();
+  void read_differentials(std::map<std::size_t, std::map<std::string, std::string>>& functions);
 
   static std::string function_id(const std::string& name, const std::string& var);
 

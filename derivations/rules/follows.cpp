@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <set>
 
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/counterexample.hpp"
@@ -72,6 +73,27 @@ bool at_declared_parameter(const StepContext& c, const ex& e, const ex& s) {
   return true;
 }
 
+// A divisor of e (a base under a negative power) that the eliminations of `red` reduce to zero,
+// as text; "" when there is none.
+std::string divisor_made_zero(StepContext& c, const ex& e, const Reduction& red) {
+  std::vector<ex> divisors;
+  std::function<void(const ex&)> walk = [&](const ex& x) {
+    if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
+      divisors.push_back(x.op(0));
+    for (std::size_t i = 0; i < x.nops(); ++i) walk(x.op(i));
+  };
+  walk(e);
+  for (const auto& d : divisors) {
+    try {
+      if (GiNaC::normal(reduced(c, d, red)).is_zero()) return c.text(d);
+    } catch (const std::exception&) {
+      return c.text(d);   // dividing by zero while reducing it
+    }
+  }
+  return "";
+}
+
 std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, const ex& claim) {
   // the points: where the claim and the references apply the functions (x0 = A cos(phi) from
   // x(0) = x0 and x(t) = A cos(omega t + phi) needs the latter at t = 0)
@@ -81,14 +103,22 @@ std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, co
   std::sort(want.begin(), want.end(), [&](const ex& x, const ex& y) { return c.text(x) < c.text(y); });
   std::vector<Eq> out = eqs;
   if (want.empty()) return out;
-  bool claim_has_derivative = false;
-  {
-    std::function<void(const ex&)> walk = [&](const ex& e) {
-      if (GiNaC::is_a<GiNaC::fderivative>(e)) claim_has_derivative = true;
-      for (std::size_t i = 0; i < e.nops(); ++i) walk(e.op(i));
-    };
-    walk(claim);
-  }
+  // the derivatives the claim or a reference takes (v'(t)): a reference's derivative is used
+  // only when it brings in no other (m v'' + b v' = 0 beside m v' + b v = 0 would let the elimination
+  // pin m = b = 0, where the claim is undefined)
+  // (a derivative by its function and order, wherever it is applied: p'(t) and p'(t2) alike)
+  using Key = std::pair<unsigned, std::vector<unsigned>>;
+  std::set<Key> claim_derivatives;
+  std::function<void(const ex&, std::set<Key>&)> derivatives = [&](const ex& e, std::set<Key>& out) {
+    if (GiNaC::is_a<GiNaC::fderivative>(e)) {
+      const auto& f = GiNaC::ex_to<GiNaC::fderivative>(e);
+      out.insert({f.get_serial(), std::vector<unsigned>(f.derivatives().begin(), f.derivatives().end())});
+    }
+    for (std::size_t i = 0; i < e.nops(); ++i) derivatives(e.op(i), out);
+  };
+  derivatives(claim, claim_derivatives);
+  const bool claim_has_derivative = !claim_derivatives.empty();
+  for (const auto& q : eqs) derivatives(q.e, claim_derivatives);   // or that a reference takes
   for (const auto& q : eqs) {
     std::vector<ex> args;
     application_args(q.e, args);
@@ -98,7 +128,11 @@ std::vector<Eq> instantiate(const StepContext& c, const std::vector<Eq>& eqs, co
     std::vector<ex> forms{q.e};
     if (claim_has_derivative) {
       ex d = q.e.diff(s);
-      if (!d.is_zero()) forms.push_back(d);
+      std::set<Key> brought;
+      derivatives(d, brought);
+      bool only_the_claims = true;
+      for (const auto& x : brought) only_the_claims = only_the_claims && claim_derivatives.count(x);
+      if (!d.is_zero() && only_the_claims) forms.push_back(d);
     }
     for (std::size_t k = 0; k < forms.size(); ++k) {
       if (k > 0) out.push_back({forms[k], ex(), q.from});
@@ -160,6 +194,11 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
     v = prove_equal(ra, rb, c.d.symbols, c.opt);
     if (v.kind != VerdictKind::Refuted) break;
     Gap gap = counterexample_gap(c, red, eqs, v);
+    // a divisor of the claim that the eliminations make zero (m = b = 0 from m v' = -b v and
+    // its derivative): the point is one where the claim is undefined, no counterexample
+    if (gap.why.empty())
+      if (std::string d = divisor_made_zero(c, a - b, red); !d.empty())
+        gap.why = "the eliminations make the claim's divisor " + d + " zero there";
     if (gap.why.empty()) break;
     if (gap.elimination && attempt < 4) {
       // That choice banned; when the same quantity is eliminated again (the references hold at

@@ -120,3 +120,17 @@ TEST_CASE("document search: a condition stated a paragraph earlier still counts 
                     "$$p_2 V_2 = n R T_2 = p_1 V_1$$\n");                             // 9
   CHECK(at(rows, 9, 2).verdict != "refuted");
 }
+
+TEST_CASE("document search: a row of differentials is read divided by the differential of the display's variable") {
+  auto rows = check("$$\\begin{aligned} m \\frac{dv}{dt} &= -b v \\\\\n"   // 1
+                    "dv &= -\\frac{b}{m} v\\,dt \\end{aligned}$$\n");          // 2
+  CHECK(at(rows, 2).verdict == "proved");
+  auto slip = check("$$\\begin{aligned} m \\frac{dv}{dt} &= -b v \\\\\n"
+                    "dv &= -\\frac{m}{b} v\\,dt \\end{aligned}$$\n");
+  CHECK(at(slip, 2).verdict != "proved");
+  // a term without a differential: not read, with the reason
+  auto mixed = check("$$\\begin{aligned} m \\frac{dv}{dt} &= -b v \\\\\n"
+                     "dv &= -\\frac{b}{m} v \\end{aligned}$$\n");
+  CHECK(at(mixed, 2).verdict == "undecided");
+  CHECK(at(mixed, 2).reason.find("a differential") != std::string::npos);
+}

@@ -556,7 +556,7 @@ Parsed Parser::eval_bar(Parsed f, const Token& bar) {
 }
 
 // dv/dt, d\mathbf{p}/dt, d(mv)/dt, \mathrm{d}x/\mathrm{d}t: a derivative written with a slash;
-// any other differential outside an integral is not read yet.
+// dv on its own: differential(v).
 Parsed Parser::slash_derivative(const Token& d) {
   std::size_t start = pos_, after = 0;
   is_d_mark(pos_, after);
@@ -573,8 +573,19 @@ Parsed Parser::slash_derivative(const Token& d) {
   else not_yet();
   std::size_t dd = 0;
   if (!peek().is('/') || pos_ + 1 >= end_ || !is_d_mark(pos_ + 1, dd) || dd >= end_ || !starts_name(toks_[dd])) {
-    pos_ = start;
-    not_yet();
+    // a differential on its own (`dv = a\,dt`, `\frac{dm}{m}`): differential(v). Only the
+    // document reader takes it, dividing the row by the differential of the display's variable
+    // (or reporting the row as not read); any other reader rejects the unknown function.
+    if (body.node.kind != NodeKind::Symbol) {
+      pos_ = start;
+      not_yet();
+    }
+    --nest_;
+    std::vector<Parsed> args;
+    args.push_back(std::move(body));
+    Parsed out = call("differential", std::move(args), d);
+    extend(out, toks_[pos_ - 1]);
+    return out;
   }
   pos_ = dd;
   Parsed var = name();
