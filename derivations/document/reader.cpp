@@ -524,6 +524,7 @@ void DocumentReader::build_steps() {
     std::vector<std::string> cited;
     for (const auto& ref : r.tex.refs) add_all(cited, by_label[ref]);
     for (const auto& tag : tags_in(disp.prose_before)) add_all(cited, by_tag[tag]);
+    for (const auto& label : refs_in(disp.prose_before)) add_all(cited, by_label[label]);
     std::vector<Link> links;
     int link_no = 0;
     std::size_t total = 0;
@@ -672,6 +673,18 @@ std::vector<std::string> DocumentReader::tags_in(const std::string& prose) {
     if (j < prose.size() && prose[j] == ')' && j > i + 1 && std::isdigit(static_cast<unsigned char>(prose[i + 1])))
       out.push_back(prose.substr(i + 1, j - i - 1));
   }
+  return out;
+}
+
+// The labels the text cites with \eqref{…} or \ref{…}.
+std::vector<std::string> DocumentReader::refs_in(const std::string& prose) {
+  std::vector<std::string> out;
+  for (const char* cs : {"\\eqref{", "\\ref{"})
+    for (std::size_t p = prose.find(cs); p != std::string::npos; p = prose.find(cs, p + 1)) {
+      const std::size_t b = p + std::char_traits<char>::length(cs);
+      const std::size_t e = prose.find('}', b);
+      if (e != std::string::npos) out.push_back(prose.substr(b, e - b));
+    }
   return out;
 }
 

@@ -141,6 +141,7 @@ class DocumentReader {
 
   static std::string hint_of(const std::string& prose);
   static std::string continuation_of(const std::string& prose);
+  static std::vector<std::string> refs_in(const std::string& prose);
 
   // Every name the steps use, declared real (unless a directive declared it); the functions
   // found in parse_rows with their variable.

@@ -29,6 +29,16 @@ void DocumentReader::inline_givens() {
       at_point.insert(i + 1);
     }
   }
+  // `in equilibrium at $x = 0$`: the same, an equation right after the word "at"
+  for (std::size_t i = 0; i < doc_.inlines.size(); ++i) {
+    std::size_t p = offset_of(doc_.inlines[i].origin);
+    if (p > 0 && (src[p - 1] == '$' || src[p - 1] == '(')) --p;   // the opening $ or \(
+    if (p > 0 && src[p - 1] == '\\') --p;
+    std::size_t e = p;
+    while (e > 0 && src[e - 1] == ' ') --e;
+    if (e >= 3 && src.compare(e - 2, 2, "at") == 0 && !std::isalpha(static_cast<unsigned char>(src[e - 3])))
+      at_point.insert(i);
+  }
   for (std::size_t mi = 0; mi < doc_.inlines.size(); ++mi) {
     const auto& m = doc_.inlines[mi];
     if (at_point.count(mi)) continue;
