@@ -215,6 +215,24 @@ StepResult Search::run() {
     return finish(res, v);
   }
   std::string tried = join(tried_);
+  // the same sets with every undeclared name positive: `T = 2\pi/\omega_0 = 2\pi\sqrt{m/k}` holds
+  // there. Not derived (the author declared no sign), but the declaration that decides it is named
+  if (row_.relation == "=" && !nested_)
+    for (const auto& refs : candidate_sets()) {
+      if (late()) break;
+      StepResult pos = attempt_positive(refs);
+      if (usable(pos) && pos.verdict.holds() && !rests_on_a_slip(refs)) {
+        std::set<std::string> names;
+        for (const auto& side : s_.claim.sides) names_of(side, names);
+        std::string list;
+        for (const auto& n : names)
+          if (const SymbolInfo* info = d_.symbols.find(n); info && !info->is_function && info->domain.unrestricted())
+            list += (list.empty() ? "" : ", ") + n;
+        return finish(res, undecided("declaration", "it follows from " + join(refs) +
+                                                        " when the names are positive, which the document does not "
+                                                        "declare: `symbol " + list + " : positive` would decide it"));
+      }
+    }
   return finish(res, undecided("search", "not an identity, and it does not follow from " +
                                                      (tried.empty() ? std::string("the rows before it") : tried)));
 }

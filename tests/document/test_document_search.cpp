@@ -134,3 +134,14 @@ TEST_CASE("document search: a row of differentials is read divided by the differ
   CHECK(at(mixed, 2).verdict == "undecided");
   CHECK(at(mixed, 2).reason.find("a differential") != std::string::npos);
 }
+
+TEST_CASE("document search: a row that holds for positive names is undecided naming the declaration, and derived once declared") {
+  const std::string rows_text = "$$\\omega^2 = \\frac{k}{m}$$\n"                          // 1 (2 with the directive)
+                                "\n"
+                                "$$T = \\frac{2\\pi}{\\omega} = 2\\pi\\sqrt{\\frac{m}{k}}$$\n";   // 3
+  auto plain = check(rows_text);
+  CHECK(at(plain, 3, 2).verdict == "undecided");
+  CHECK(at(plain, 3, 2).reason.find("positive") != std::string::npos);
+  auto declared = check("<!-- derivcheck: symbol k, m, omega : positive -->\n" + rows_text);
+  CHECK(at(declared, 4, 2).verdict == "proved");
+}
