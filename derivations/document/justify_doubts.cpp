@@ -48,7 +48,9 @@ std::string Search::free_subject(const StepResult& r, const std::vector<std::str
   if (!usable(s) || v.kind != VerdictKind::Refuted || side_condition_only(v) ||
       v.detail.find("do not determine") != std::string::npos || v.reason.find("do not determine") != std::string::npos)
     return doubt;
-  if (v.method.rfind("lsolve", 0) != 0 && v.method.rfind("claim substituted back", 0) != 0) return doubt;
+  // (only a linear system the rows determine: substituting a nonlinear claim back can fail an
+  // equation that the rows leave unrelated to the subject)
+  if (v.method.rfind("lsolve", 0) != 0) return doubt;
   evidence = s;
   return "";
 }
@@ -87,7 +89,8 @@ std::string Search::untrusted_row(const std::vector<std::string>& refs) {
       StepResult own = Search(d_, *st, opt_, true, work_).run();
       const std::string why = own.verdict.kind == VerdictKind::Refuted ? "is itself refuted by its own search"
                               : late()                                 ? "could not be checked itself within the search's tries"
-                                                                       : "";
+                              : own.premise || own.verdict.holds()     ? ""
+                                                                       : "is not derived itself (its own search leaves it undecided)";
       it = trusted_.emplace(label, why).first;
     }
     if (!it->second.empty())

@@ -581,6 +581,7 @@ void DocumentReader::build_steps() {
       DocumentRow dr;
       dr.link = l.link;
       dr.display = static_cast<int>(r.display);
+      dr.section = static_cast<int>(section);
       dr.relation = l.relation;
       dr.locals = locals;
       dr.fresh = fresh;
@@ -611,8 +612,17 @@ void DocumentReader::build_steps() {
       s.document_row = std::move(dr);
       this_row.push_back(s.label);
       chain_labels[l.chain].push_back(s.label);
-      if (!r.tex.label.empty()) by_label[r.tex.label].push_back(s.label);
-      if (!r.tex.tag.empty()) by_tag[r.tex.tag].push_back(s.label);
+      // a tag or label names the rows of the latest display that carries it (a long document
+      // may number its equations again in a later part)
+      auto own = [&](std::vector<std::string>& labels) {
+        if (!labels.empty()) {
+          const Step* last = d_.find(labels.back());
+          if (last && last->document_row && last->document_row->display != static_cast<int>(r.display)) labels.clear();
+        }
+        labels.push_back(s.label);
+      };
+      if (!r.tex.label.empty()) own(by_label[r.tex.label]);
+      if (!r.tex.tag.empty()) own(by_tag[r.tex.tag]);
       d_.steps.push_back(std::move(s));
     }
     for (const auto& l : this_row) section_steps.push_back({section, l, locals});
