@@ -581,7 +581,6 @@ void DocumentReader::build_steps() {
       DocumentRow dr;
       dr.link = l.link;
       dr.display = static_cast<int>(r.display);
-      dr.section = static_cast<int>(section);
       dr.relation = l.relation;
       dr.locals = locals;
       dr.fresh = fresh;

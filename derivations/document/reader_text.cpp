@@ -73,7 +73,6 @@ void DocumentReader::inline_givens() {
       DocumentRow dr;
       dr.relation = "inline";
       dr.display = static_cast<int>(m.displays_before);   // the display it leads into
-      dr.section = m.section;
       s.document_row = dr;
       std::string subject = ch.sides[0].kind == NodeKind::Symbol ? ch.sides[0].text : std::string();
       const bool where = m.displays_before > 0 && in_where_clause(m.displays_before - 1, m.origin);
@@ -213,7 +212,6 @@ void DocumentReader::neglected_names() {
         DocumentRow dr;
         dr.relation = "inline";
         dr.display = static_cast<int>(k);
-        dr.section = doc_.displays[k].section;
         s.document_row = dr;
         InlineStep is{k, static_cast<std::size_t>(doc_.displays[k].section), std::move(s), x.text};
         auto it = std::find_if(inline_steps_.begin(), inline_steps_.end(), [&](const InlineStep& o) {

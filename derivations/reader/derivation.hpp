@@ -57,7 +57,6 @@ struct Erratum {
 struct DocumentRow {
   int link = 0;                     // 0: the row's only relation; 1, 2, ...: its relations in order
   int display = 0;                  // which displayed equation of the document it is in (0, 1, ...)
-  int section = 0;                  // which section (counted by headings) it is in
   std::string relation = "=";       // "=", "approx", "<", "<=", ">", ">=", "!=", "inline" (a given
                                     // written in the prose)
   std::vector<std::string> nearby;  // labels of earlier steps the search may cite, nearest first
