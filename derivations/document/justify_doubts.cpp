@@ -30,20 +30,10 @@ std::string Search::free_subject(const StepResult& r, const std::vector<std::str
   for (const auto& label : refs)
     if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline")
       for (const auto& side : st->claim.sides) names_of(side, theirs);
-  RuleSpec rule;
-  rule.name = rule.written_name = "solve";
-  for (const auto& label : refs) rule.refs.push_back(label_arg(label));
-  rule.unknowns.push_back(node_arg(s_.claim.sides.front(), RuleArg::Kind::Symbol));
-  for (const auto& n : theirs) {   // the names the rows determine (the rewrite eliminated them)
-    const SymbolInfo* info = d_.symbols.find(n);
-    if (mine.count(n) || chosen_names.count(n) || !info || info->is_function) continue;
-    Node y;
-    y.kind = NodeKind::Symbol;
-    y.text = n;
-    y.pos = s_.claim_pos;
-    rule.unknowns.push_back(node_arg(y, RuleArg::Kind::Symbol));
-  }
-  StepResult s = attempt_rule(rule);
+  // unknowns: the subject and the names the rows determine (the rewrite eliminated them)
+  std::set<std::string> skip = mine;
+  skip.insert(chosen_names.begin(), chosen_names.end());
+  StepResult s = attempt_rule(solve_spec(refs, s_.claim.sides.front(), theirs, skip));
   const Verdict& v = s.verdict;
   if (!usable(s) || v.kind != VerdictKind::Refuted || side_condition_only(v) ||
       v.detail.find("do not determine") != std::string::npos || v.reason.find("do not determine") != std::string::npos)

@@ -106,27 +106,35 @@ std::optional<StepResult> Search::by_solve() {
     }
     if (rows.empty() || !theirs.count(subject.text)) continue;
     if (++tries > 6) break;
-    RuleSpec rule;
-    rule.name = rule.written_name = "solve";
-    for (const auto& label : refs) rule.refs.push_back(label_arg(label));
-    rule.unknowns.push_back(node_arg(subject, RuleArg::Kind::Symbol));
-    for (const auto& n : theirs) {
-      const SymbolInfo* info = d_.symbols.find(n);
-      if (!mine.count(n) && !given.count(n) && info && !info->is_function) {
-        Node x;
-        x.kind = NodeKind::Symbol;
-        x.text = n;
-        x.pos = s_.claim_pos;
-        rule.unknowns.push_back(node_arg(x, RuleArg::Kind::Symbol));
-      }
-    }
-    StepResult r = attempt_rule(rule);
+    std::set<std::string> skip = mine;
+    skip.insert(given.begin(), given.end());
+    StepResult r = attempt_rule(solve_spec(refs, subject, theirs, skip));
     if (usable(r) && r.verdict.holds() && !rests_on_a_slip(refs)) {
       std::string what = "solve for " + subject.text;
       return found(r, what, refs);
     }
   }
   return std::nullopt;
+}
+
+// `by solve REFS for x, y…`: the subject, then each declared plain name of `names` not in `skip`
+// (what the rows determine beside it).
+RuleSpec Search::solve_spec(const std::vector<std::string>& refs, const Node& subject,
+                            const std::set<std::string>& names, const std::set<std::string>& skip) const {
+  RuleSpec rule;
+  rule.name = rule.written_name = "solve";
+  for (const auto& label : refs) rule.refs.push_back(label_arg(label));
+  rule.unknowns.push_back(node_arg(subject, RuleArg::Kind::Symbol));
+  for (const auto& n : names) {
+    const SymbolInfo* info = d_.symbols.find(n);
+    if (skip.count(n) || !info || info->is_function) continue;
+    Node x;
+    x.kind = NodeKind::Symbol;
+    x.text = n;
+    x.pos = s_.claim_pos;
+    rule.unknowns.push_back(node_arg(x, RuleArg::Kind::Symbol));
+  }
+  return rule;
 }
 
 // `… = m_r\Delta v - u_e\Delta m` "where the higher-order term was neglected": the two sides

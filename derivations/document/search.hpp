@@ -71,6 +71,8 @@ class Search {
   // `theta = \arccos(…)` from rows that give cos(theta): solved for the subject, the names of
   // the rows that the claim does not mention eliminated.
   std::optional<StepResult> by_solve();
+  RuleSpec solve_spec(const std::vector<std::string>& refs, const Node& subject, const std::set<std::string>& names,
+                      const std::set<std::string>& skip) const;
 
   // `… = m_r\Delta v - u_e\Delta m` "where the higher-order term was neglected": the two sides
   // differ by terms of second order in the small quantities (the names the text writes with

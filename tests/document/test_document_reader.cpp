@@ -6,46 +6,12 @@
 #include <string>
 
 #include "derivations/document/document.hpp"
+#include "document/document_rows.hpp"
 #include "derivations/syntax/document.hpp"
 
-namespace {
-
-using dc::VerdictKind;
-
-struct Row {
-  std::string label;
-  int line = 0;
-  int link = 0;
-  std::string verdict;   // premise, proved, holds_numerically, refuted, undecided
-  std::string rule;
-  std::string reason;
-};
-
-std::vector<Row> check(const std::string& name, const std::string& text) {
-  dc::Derivation d = dc::read_document(dc::SourceText{name, text});
-  std::vector<Row> out;
-  for (const auto& s : d.steps) {
-    dc::StepResult r = dc::check_any_step(d, s);
-    Row row;
-    row.label = s.label;
-    row.line = s.pos.line;
-    row.link = s.document_row ? s.document_row->link : 0;
-    row.verdict = r.premise && r.verdict.holds() ? "premise" : dc::to_string(r.verdict.kind);
-    row.rule = r.found_rule;
-    row.reason = r.verdict.reason;
-    out.push_back(row);
-  }
-  return out;
-}
-
-const Row& at(const std::vector<Row>& rows, int line, int link = 0) {
-  for (const auto& r : rows)
-    if (r.line == line && r.link == link) return r;
-  FAIL("no row at line " << line << " link " << link);
-  return rows.front();
-}
-
-}  // namespace
+using document_test::at;
+using document_test::check;
+using document_test::Row;
 
 TEST_CASE("document split: Markdown displays, rows of aligned, inline math, code skipped") {
   const std::string md =

@@ -6,37 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "derivations/document/document.hpp"
+#include "document/document_rows.hpp"
 
 namespace {
 
-struct Row {
-  int line = 0;
-  int link = 0;
-  std::string verdict;
-  std::string rule;
-  std::string reason;
-};
-
-std::vector<Row> check(const std::string& text) {
-  dc::Derivation d = dc::read_document(dc::SourceText{"search.md", text});
-  std::vector<Row> out;
-  for (const auto& s : d.steps) {
-    if (s.document_row && s.document_row->relation == "inline") continue;
-    dc::StepResult r = dc::check_any_step(d, s);
-    out.push_back({s.pos.line, s.document_row ? s.document_row->link : 0,
-                   r.premise && r.verdict.holds() ? "premise" : dc::to_string(r.verdict.kind), r.found_rule,
-                   r.verdict.reason});
-  }
-  return out;
-}
-
-const Row& at(const std::vector<Row>& rows, int line, int link = 0) {
-  for (const auto& r : rows)
-    if (r.line == line && r.link == link) return r;
-  FAIL("no row at line " << line << " link " << link);
-  return rows.front();
-}
+std::vector<document_test::Row> check(const std::string& text) { return document_test::check("search.md", text, true); }
+using document_test::at;
 
 }  // namespace
 
