@@ -605,3 +605,24 @@ TEST_CASE("an assumption whose sides have different dimensions is a positioned w
   CHECK(j["files"][0]["diagnostics"][0]["severity"] == "warning");
   CHECK(c.sum.exit_code(false) == dc::kExitOk);   // a warning does not change the exit code
 }
+
+TEST_CASE("rewrite with abstract functions: a reference's derivative does not pin its coefficients to zero", "[rules][soundness][functions]") {
+  // m v' = -b v and its derivative m v'' = -b v' let the elimination take m = b = 0, where
+  // v = -m v'/b is undefined: that point was reported as a counterexample
+  Checked c = check("decay.dc",
+                    "symbol b, m, t : real [1]\n"
+                    "function v(t) : real [1]\n"
+                    "law: m*diff(v(t), t) = -b*v(t)\n"
+                    "    by given\n"
+                    "rate: diff(v(t), t) = -b*v(t)/m\n"
+                    "    by rewrite law\n"
+                    "back: v(t) = -m*diff(v(t), t)/b\n"
+                    "    by rewrite law\n"
+                    "wrong: v(t) = -b*diff(v(t), t)/m\n"
+                    "    by rewrite law\n");
+  for (const char* label : {"rate", "back"}) {
+    CAPTURE(label);
+    CHECK(c.at(label).verdict.holds());
+  }
+  require_refuted(c, "wrong");
+}
