@@ -210,4 +210,19 @@ std::optional<int> order_of_term(const ex& g, const GiNaC::symbol& x, const ex& 
   return static_cast<int>(at_infinity ? -n : n);
 }
 
+Verdict second_order_in_smalls(const GiNaC::ex& d, const std::vector<GiNaC::ex>& smalls, const SymbolTable& ctx,
+                               std::string* eps_name) {
+  SymbolTable scaled = ctx;
+  SymbolInfo info;
+  info.name = "eps";
+  for (int k = 1; scaled.find(info.name); ++k) info.name = "eps" + std::to_string(k);
+  info.domain = Domain::positive();
+  const GiNaC::ex eps = scaled.declare(info).sym;
+  if (eps_name) *eps_name = info.name;
+  GiNaC::exmap by_eps;
+  for (const auto& s : smalls) by_eps[s] = eps * s;
+  const GiNaC::ex r = d.subs(by_eps, GiNaC::subs_options::no_pattern);
+  return remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 2, scaled);
+}
+
 }  // namespace dc

@@ -11,6 +11,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <ginac/ginac.h>
 
@@ -25,6 +26,12 @@ namespace dc {
 // The verdict's lhs_value / rhs_value hold, when refuted, the quotient's limit.
 Verdict remainder_is_big_o(const GiNaC::ex& remainder, const GiNaC::symbol& x, const GiNaC::ex& point,
                            int at_infinity, int dir, int order, const SymbolTable& ctx);
+
+// Agreement to first order in small quantities: d = O(eps^2) after every small quantity s
+// becomes eps*s, as eps -> 0+ (the gauge above in eps, each s fixed). eps is a fresh positive
+// symbol of a copy of ctx (`eps`, or `eps1`, … when the name is taken), its name in *eps_name.
+Verdict second_order_in_smalls(const GiNaC::ex& d, const std::vector<GiNaC::ex>& smalls, const SymbolTable& ctx,
+                               std::string* eps_name = nullptr);
 
 // "O(x^3)", "O((x - 1)^2)", "O(x^-2) as x -> oo": the gauge as text, for messages.
 std::string big_o_text(const GiNaC::symbol& x, const GiNaC::ex& point, int at_infinity, int order,

@@ -413,6 +413,19 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
 // it garbles pin a quantity to a special value, and from that anything about it follows
 // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
 // is not a given is searched for itself (one level deep), and a refuted one voids the proof.
+const Search::Own& Search::own_search(const Step& st) const {
+  auto it = own_.find(st.label);
+  if (it == own_.end()) {
+    const StepResult r = Search(d_, st, opt_, true, work_).run();
+    Own o;
+    o.refuted = r.verdict.kind == VerdictKind::Refuted;
+    o.established = r.premise || r.verdict.holds();
+    o.cut = late();
+    it = own_.emplace(st.label, o).first;
+  }
+  return it->second;
+}
+
 bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<std::string>* slips) const {
   if (nested_) return false;
   std::size_t rows = 0;
@@ -424,11 +437,9 @@ bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<s
     const Step* st = d_.find(label);
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
     if (late()) return true;   // not checked in time: no proof rests on it
-    auto it = refuted_.find(label);
-    if (it == refuted_.end())
-      it = refuted_.emplace(label, Search(d_, *st, opt_, true, work_).run().verdict.kind == VerdictKind::Refuted).first;
-    if (late()) return true;
-    if (it->second) {
+    const Own& own = own_search(*st);
+    if (own.cut) return true;
+    if (own.refuted) {
       any = true;
       if (slips) slips->push_back(label);
     }

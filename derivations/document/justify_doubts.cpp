@@ -74,18 +74,13 @@ std::string Search::untrusted_row(const std::vector<std::string>& refs) {
   for (const auto& label : refs) {
     const Step* st = d_.find(label);
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
-    auto it = trusted_.find(label);
-    if (it == trusted_.end()) {
-      StepResult own = Search(d_, *st, opt_, true, work_).run();
-      const std::string why = own.verdict.kind == VerdictKind::Refuted ? "is itself refuted by its own search"
-                              : late()                                 ? "could not be checked itself within the search's tries"
-                              : own.premise || own.verdict.holds()     ? ""
-                                                                       : "is not derived itself (its own search leaves it undecided)";
-      it = trusted_.emplace(label, why).first;
-    }
-    if (!it->second.empty())
-      return label + " " + it->second + ", and the counterexample rests on it: this row may continue from the "
-                     "right result";
+    const Own& own = own_search(*st);
+    const std::string why = own.refuted       ? "is itself refuted by its own search"
+                            : own.cut         ? "could not be checked itself within the search's tries"
+                            : own.established ? ""
+                                              : "is not derived itself (its own search leaves it undecided)";
+    if (!why.empty())
+      return label + " " + why + ", and the counterexample rests on it: this row may continue from the right result";
   }
   return "";
 }

@@ -158,17 +158,8 @@ std::optional<StepResult> Search::by_first_order() {
       }
   if (smalls.empty()) return std::nullopt;
   try {
-    SymbolTable scaled = d_.symbols;
-    SymbolInfo info;
-    info.name = "eps";
-    for (int k = 1; scaled.find(info.name); ++k) info.name = "eps" + std::to_string(k);
-    info.domain = Domain::positive();
-    const GiNaC::ex eps = scaled.declare(info).sym;
-    GiNaC::exmap by_eps;
-    for (const auto& x : smalls) by_eps[x] = eps * x;
     const GiNaC::ex diff = to_ginac(s_.claim.sides[0], d_.symbols) - to_ginac(s_.claim.sides[1], d_.symbols);
-    const GiNaC::ex r = diff.subs(by_eps, GiNaC::subs_options::no_pattern);
-    Verdict v = remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 2, scaled);
+    Verdict v = second_order_in_smalls(diff, smalls, d_.symbols);
     if (v.kind != VerdictKind::Proved) return std::nullopt;
     StepResult res;
     res.step = &s_;

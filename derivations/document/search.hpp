@@ -151,8 +151,15 @@ class Search {
   const Step& s_;
   const DocumentRow& row_;
   const ProveOptions& opt_;
-  mutable std::map<std::string, bool> refuted_;   // label -> refuted by its own (nested) search
-  std::map<std::string, std::string> trusted_;   // label -> "" (a given or derived) or why not
+  // What a row's own (nested) search found, once per row: refuted, a given or derived, or cut
+  // short by the count of tries (then neither a proof nor a refutation may rest on it).
+  struct Own {
+    bool refuted = false;
+    bool established = false;
+    bool cut = false;
+  };
+  mutable std::map<std::string, Own> own_;
+  const Own& own_search(const Step& st) const;
   std::unique_ptr<Derivation> positive_;   // d_ with every undeclared name positive (made when needed)
   std::vector<std::string> new_names_;
   std::vector<std::string> tried_;

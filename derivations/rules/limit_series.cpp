@@ -267,13 +267,8 @@ SymbolTable with_scale(const SymbolTable& t, ex& eps) {
 // d = L - R is O(eps^2) after every small quantity d_i becomes eps*d_i, as eps -> 0+ (the
 // gauge of big_o.hpp in eps, d_i fixed: each direction of approach on its own).
 Verdict second_order_in_eps(StepContext& c, const ex& d, const std::vector<ex>& smalls, const std::string& how) {
-  ex eps;
-  const SymbolTable scaled = with_scale(c.d.symbols, eps);
-  GiNaC::exmap by_eps;
-  for (const ex& s : smalls) by_eps[s] = eps * s;
-  const ex r = d.subs(by_eps, GiNaC::subs_options::no_pattern);
-  Verdict v = remainder_is_big_o(r, GiNaC::ex_to<GiNaC::symbol>(eps), 0, 0, +1, 2, scaled);
-  const std::string e = GiNaC::ex_to<GiNaC::symbol>(eps).get_name();
+  std::string e;
+  Verdict v = second_order_in_smalls(d, smalls, c.d.symbols, &e);
   v.method = "first order (" + how + "; each small quantity scaled by " + e + "): " + v.method;
   if (v.kind == VerdictKind::Refuted && !v.point.empty())
     v.detail += " (each small quantity is " + e + " times its value at this point)";
