@@ -117,6 +117,10 @@ StepResult Search::run() {
         StepResult w = attempt(rest);
         if (usable(w) && w.verdict.holds() && !rests_on_a_slip(rest)) return found(w, "rewrite", rest);
       }
+      if (voided_.empty() && !slips.empty())
+        voided_ = "it follows from " + join(refs) + ", but " + join(slips) +
+                  " among them is refuted, or left standing only by a doubt (a counterexample satisfies the rows "
+                  "before it); a slip beside the row it garbles pins a quantity, and from that anything follows";
     }
     if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs});
     // undecided where the names take any real value (V^gamma at a negative volume): the
@@ -233,6 +237,7 @@ StepResult Search::run() {
                                                         "declare: `symbol " + list + " : positive` would decide it"));
       }
     }
+  if (!voided_.empty()) return finish(res, undecided("search", voided_));
   return finish(res, undecided("search", "not an identity, and it does not follow from " +
                                                      (tried.empty() ? std::string("the rows before it") : tried)));
 }
@@ -409,6 +414,14 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
   return out;
 }
 
+static std::set<std::string> quantities_of(const Step& st) {
+  std::set<std::string> out;
+  for (const auto& side : st.claim.sides) names_of(side, out);
+  for (const auto& n : std::set<std::string>(out))
+    if (const std::size_t of = n.find("__of_"); of != std::string::npos) out.erase(n.substr(of + 5));
+  return out;
+}
+
 // A proof from several rows is worth nothing when one of them is a slip: the slip and the row
 // it garbles pin a quantity to a special value, and from that anything about it follows
 // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
@@ -419,6 +432,7 @@ const Search::Own& Search::own_search(const Step& st) const {
     const StepResult r = Search(d_, st, opt_, true, work_).run();
     Own o;
     o.refuted = r.verdict.kind == VerdictKind::Refuted;
+    o.withheld = r.verdict.kind == VerdictKind::Undecided && r.verdict.method == "refutation withheld";
     o.established = r.premise || r.verdict.holds();
     o.cut = late();
     it = own_.emplace(st.label, o).first;
@@ -428,18 +442,31 @@ const Search::Own& Search::own_search(const Step& st) const {
 
 bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<std::string>* slips) const {
   if (nested_) return false;
-  std::size_t rows = 0;
-  for (const auto& label : refs)
-    if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline") ++rows;
-  if (rows < 2) return false;
+  // (an equation of the text counts: `$s_o s_i = f(s_o + s_i)$` beside a garbled lens row pins f = 0)
+  if (refs.size() < 2) return false;
+  std::vector<std::set<std::string>> names(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i)
+    if (const Step* st = d_.find(refs[i])) names[i] = quantities_of(*st);
+  // a row pins nothing with rows that share no name with it (`dv = …` from one row beside
+  // `$D = 0$`, `$\theta = 0$`): the proof is then from that row alone, a step of its own
+  auto shares = [&](std::size_t i) {
+    for (std::size_t j = 0; j < refs.size(); ++j)
+      if (j != i)
+        for (const auto& n : names[i])
+          if (names[j].count(n)) return true;
+    return false;
+  };
   bool any = false;
-  for (const auto& label : refs) {
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const std::string& label = refs[i];
     const Step* st = d_.find(label);
-    if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+    if (!st || !st->document_row || st->document_row->relation == "inline" || !shares(i)) continue;
     if (late()) return true;   // not checked in time: no proof rests on it
     const Own& own = own_search(*st);
     if (own.cut) return true;
-    if (own.refuted) {
+    // a row that a counterexample to the rows before it leaves standing only by a doubt may
+    // be a slip as well (`\omega_0 Q_0 = Q_0\sqrt{LC}` beside `\omega_0 = 1/\sqrt{LC}` pins LC = 1)
+    if (own.refuted || own.withheld) {
       any = true;
       if (slips) slips->push_back(label);
     }
@@ -452,7 +479,8 @@ bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<s
 // for the displays it is a condition of.
 bool Search::in_force(const Step& st) const {
   auto mine = [&](const std::string& label) {
-    return std::find(row_.locals.begin(), row_.locals.end(), label) != row_.locals.end();
+    return std::find(row_.locals.begin(), row_.locals.end(), label) != row_.locals.end() ||
+           std::find(row_.where.begin(), row_.where.end(), label) != row_.where.end();
   };
   for (const auto& c : st.document_row->locals)
     if (!mine(c)) return false;
@@ -461,12 +489,10 @@ bool Search::in_force(const Step& st) const {
 
 // Earlier rows in force here (their conditions hold here too), by how many of the claim's
 // names they mention, the nearer first on a tie.
+// The names of a step's claim without the variables of its functions (t in dp/dt says
+// nothing about which rows a row uses or shares a quantity with).
 std::vector<std::string> Search::most_relevant() const {
-  std::set<std::string> mine;
-  for (const auto& side : s_.claim.sides) names_of(side, mine);
-  // the variable of the row's functions (t in dp/dt) says nothing about which rows it uses
-  for (const auto& n : std::set<std::string>(mine))
-    if (const std::size_t of = n.find("__of_"); of != std::string::npos) mine.erase(n.substr(of + 5));
+  const std::set<std::string> mine = quantities_of(s_);
   std::vector<std::pair<int, std::size_t>> scored;   // (-score, -index)
   std::size_t index = 0;
   for (const auto& st : d_.steps) {

@@ -101,6 +101,7 @@ Derivation DocumentReader::run() {
   if (d_.symbols.find("e")) ctx_.e_is_euler = false;
   parse_rows();
   inline_givens();
+  mark_definitions();
   neglected_names();
   build_steps();
   declare_symbols();
@@ -508,6 +509,12 @@ void DocumentReader::build_steps() {
       fresh = own;
       conditions = conditions_for(r.display, own, conditions, section == last_section);
       earlier = stated_earlier(r.display, section, conditions);
+      for (const auto& def : definitions_for(r.display, section))
+        if (std::find(conditions.begin(), conditions.end(), def) == conditions.end() &&
+            std::find(where.begin(), where.end(), def) == where.end()) {
+          where.push_back(def);
+          earlier.erase(std::remove(earlier.begin(), earlier.end(), def), earlier.end());
+        }
       has_last_side = false;
     }
     const std::vector<std::string>& locals = conditions;
@@ -592,8 +599,11 @@ void DocumentReader::build_steps() {
       // the links before it in the same row come first: a chain continues them
       for (auto it = this_row.rbegin(); it != this_row.rend(); ++it) dr.nearby.push_back(*it);
       // earlier rows of the section whose conditions are in force here too
+      // (a definition of the text still in force counts as one of the conditions here)
+      std::vector<std::string> in_force = locals;
+      add_all(in_force, where);
       for (auto it = section_steps.rbegin(); it != section_steps.rend() && dr.nearby.size() < kNearby; ++it)
-        if (it->section == section && subset(it->conditions, locals))
+        if (it->section == section && subset(it->conditions, in_force))
           dr.nearby.push_back(it->label);
       // the text on both sides: "… where the higher-order term was neglected" follows the display
       // (the sentences that lead into the display, and the one that continues it)

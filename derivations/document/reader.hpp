@@ -153,7 +153,14 @@ class DocumentReader {
     Step step;
     std::string subject;   // the name on its left side ("" when that is no plain name)
     bool where = false;    // in the "where …" clause right after the display before it
+    bool defines = false;  // gives a value to a name nothing earlier in its section used
   };
+
+  // Inline givens that define a fresh name (`at a mass rate of $\mu = dm/dt$`): a definition,
+  // not a case, so it stays in force for the rest of its section, until the text gives the
+  // name again or a display row gives it a value of its own (`\mu = …` on a left side).
+  std::vector<std::string> definitions_for(std::size_t k, std::size_t section) const;
+  void mark_definitions();
 
   Document doc_;
   Derivation d_;

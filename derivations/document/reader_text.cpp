@@ -49,6 +49,21 @@ void DocumentReader::inline_givens() {
       continue;   // prose math that is not an equation we read: symbols only
     }
     note_lone_names(row);
+    // `$\mu = dm/dt$`: a name differentiated on its own is a function of that variable here, as
+    // in a display (read plain, dm/dt would be 0)
+    {
+      std::map<std::string, std::string> functions;
+      for (const auto& ch : row.chains)
+        for (const auto& side : ch.sides)
+          walk(side, [&](const Node& x) {
+            if (x.kind == NodeKind::Call && x.text == "diff" && x.args.size() >= 2 &&
+                x.args[0].kind == NodeKind::Symbol && x.args[1].kind == NodeKind::Symbol)
+              functions[x.args[0].text] = x.args[1].text;
+          });
+      for (auto& ch : row.chains)
+        for (auto& side : ch.sides) to_functions(side, functions);
+      for (const auto& [name, var] : functions) function_vars_[function_id(name, var)] = var;
+    }
     for (const auto& ch : row.chains) {
       // `$\mu = m_1/m_2$`, and the substitutions the text makes (`substitute $v_2 \approx v_0$`)
       if (ch.continues || ch.sides.size() < 2) continue;
@@ -79,6 +94,69 @@ void DocumentReader::inline_givens() {
       inline_steps_.push_back({m.displays_before, static_cast<std::size_t>(m.section), std::move(s), subject, where});
     }
   }
+}
+
+// Which inline givens define a fresh name: their subject appears in no display of their
+// section before them and in no equation of the text there before them, and its value is an
+// expression of other names.
+void DocumentReader::mark_definitions() {
+  auto before = [](const SourcePos& a, const SourcePos& b) {
+    return a.line < b.line || (a.line == b.line && a.col < b.col);
+  };
+  for (auto& is : inline_steps_) {
+    if (is.subject.empty()) continue;
+    bool seen = false;
+    for (const auto& r : rows_) {
+      if (seen || r.display >= is.displays_before ||
+          static_cast<std::size_t>(doc_.displays[r.display].section) != is.section)
+        continue;
+      for (const auto& ch : r.tex.chains)
+        for (const auto& side : ch.sides) {
+          std::set<std::string> names;
+          symbol_names(side, names);
+          seen = seen || names.count(is.subject) > 0;
+        }
+    }
+    for (const auto& o : inline_steps_) {
+      if (seen || o.section != is.section || !before(o.step.pos, is.step.pos)) continue;
+      for (const auto& side : o.step.claim.sides) {
+        std::set<std::string> names;
+        symbol_names(side, names);
+        seen = seen || names.count(is.subject) > 0;
+      }
+    }
+    // a value (`$v_2 = 0$`) or another name (`$m_1 = m_2$`, `$T_2 = T_1$`) is a case of the
+    // section, however fresh: only an expression defines (`$\mu = dm/dt$`, `$\rho = m/L$`)
+    const Node* value = &is.step.claim.sides.back();
+    while (value->kind == NodeKind::Neg && !value->args.empty()) value = &value->args[0];
+    is.defines = !seen && is.step.claim.sides.size() == 2 && value->kind != NodeKind::Number &&
+                 value->kind != NodeKind::Symbol;
+  }
+}
+
+std::vector<std::string> DocumentReader::definitions_for(std::size_t k, std::size_t section) const {
+  std::vector<std::string> out;
+  auto after = [](const SourcePos& a, const SourcePos& b) {
+    return a.line > b.line || (a.line == b.line && a.col > b.col);
+  };
+  for (const auto& is : inline_steps_) {
+    if (!is.defines || is.section != section || is.displays_before > k) continue;
+    bool superseded = false;
+    for (const auto& o : inline_steps_)
+      superseded = superseded || (&o != &is && o.subject == is.subject && o.displays_before <= k &&
+                                  after(o.step.pos, is.step.pos));
+    for (const auto& b : bounded_)
+      superseded = superseded || (b.name == is.subject && b.displays_before <= k && after(b.pos, is.step.pos));
+    // a display row between the definition and display k that gives the name a value
+    for (const auto& r : rows_) {
+      if (superseded || r.display < is.displays_before || r.display >= k) continue;
+      for (const auto& ch : r.tex.chains)
+        superseded = superseded || (!ch.continues && !ch.sides.empty() && ch.sides[0].kind == NodeKind::Symbol &&
+                                    ch.sides[0].text == is.subject);
+    }
+    if (!superseded) out.push_back(is.step.label);
+  }
+  return out;
 }
 
 // A name written once in the whole document, in the text, is used for nothing and defined

@@ -155,6 +155,7 @@ class Search {
   // short by the count of tries (then neither a proof nor a refutation may rest on it).
   struct Own {
     bool refuted = false;
+    bool withheld = false;   // a counterexample satisfies the rows before it, refutation withheld
     bool established = false;
     bool cut = false;
   };
@@ -163,6 +164,7 @@ class Search {
   std::unique_ptr<Derivation> positive_;   // d_ with every undeclared name positive (made when needed)
   std::vector<std::string> new_names_;
   std::vector<std::string> tried_;
+  std::string voided_;   // the first proof voided by a row that may be a slip, for the reason
   bool nested_ = false;
   // The rules tried so far (a nested search counts into its parent's). Past kMaxWork the
   // search tries nothing more that could prove, and a counterexample it has not finished

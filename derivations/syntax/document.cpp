@@ -227,7 +227,7 @@ class Splitter {
         line_start = true;
         continue;
       }
-      if (!latex && line_start && c == '#') {
+      if (!latex && line_start && (c == '#' || numbered_heading_at(i))) {
         ++section_;
         new_paragraph();
       }
@@ -311,6 +311,31 @@ class Splitter {
       }
       prose(c);
     }
+  }
+
+  // A Markdown line that is a numbered heading written as plain text (`9.4 Variable Mass
+  // System`, as documents converted from PDF have them): a paragraph of one short line that
+  // starts with a section number of two or more parts and a capitalised word, with no math.
+  bool numbered_heading_at(std::size_t i) const {
+    if (i > 0 && !(i >= 2 && t_[i - 1] == '\n' && t_[i - 2] == '\n')) return false;
+    std::size_t p = i, parts = 0;
+    while (true) {
+      const std::size_t d = p;
+      while (p < t_.size() && std::isdigit(static_cast<unsigned char>(t_[p]))) ++p;
+      if (p == d) return false;
+      ++parts;
+      if (p < t_.size() && t_[p] == '.' && p + 1 < t_.size() && std::isdigit(static_cast<unsigned char>(t_[p + 1]))) {
+        ++p;
+        continue;
+      }
+      break;
+    }
+    if (parts < 2 || p + 1 >= t_.size() || t_[p] != ' ' || !std::isupper(static_cast<unsigned char>(t_[p + 1])))
+      return false;
+    const std::size_t end = t_.find('\n', p);
+    const std::size_t stop = end == std::string::npos ? t_.size() : end;
+    if (stop - i > 100 || t_.find('$', p) < stop) return false;
+    return stop >= t_.size() || (stop + 1 < t_.size() && t_[stop + 1] == '\n') || stop + 1 == t_.size();
   }
 
   bool is_sectioning(std::size_t i) const {

@@ -120,3 +120,61 @@ TEST_CASE("document search: a row that holds for positive names is undecided nam
   auto declared = check("<!-- derivcheck: symbol k, m, omega : positive -->\n" + rows_text);
   CHECK(at(declared, 4, 2).verdict == "proved");
 }
+
+TEST_CASE("document search: a derivative in the text is a derivative, and a definition there lasts its section") {
+  // `$\mu = dm/dt$` defines mu as a rate; read with m plain it would say mu = 0, and a row
+  // claiming u mu = 0 would follow from it
+  const std::string head = "## Rocket\n"
+                           "\n"
+                           "Fuel leaves at a rate $\\mu = dm/dt$ with speed $u$ relative to the rocket.\n"
+                           "\n"
+                           "$$F = u \\mu$$\n"                                              // 5
+                           "\n"
+                           "The thrust in terms of the mass:\n"
+                           "\n";
+  CHECK(at(check(head + "$$F = u \\frac{dm}{dt}$$\n"), 9).verdict == "proved");
+  CHECK(at(check(head + "$$F = 0$$\n"), 9).verdict != "proved");
+  // a name given again in a later section is a new quantity there: the definition is over
+  auto later = check(head + "## Masses\n\nTwo bodies.\n\n$$\\mu = \\frac{m_1}{m_2}$$\n\n$$F = u \\frac{dm}{dt}$$\n");
+  CHECK(at(later, 15).verdict != "proved");
+}
+
+TEST_CASE("document search: a numbered heading line in Markdown starts a section") {
+  // `9.4 Title` on a line of its own, as in notes converted from PDF: a definition of the
+  // section before it is not in force after it
+  const std::string head = "9.3 Impact\n"
+                           "\n"
+                           "The ratio $\\mu = m_1/m_2$ decides it:\n"
+                           "\n"
+                           "$$w = \\mu v$$\n"                                               // 5
+                           "\n";
+  CHECK(at(check(head + "Then\n\n$$w = \\frac{m_1}{m_2} v$$\n"), 9).verdict == "proved");
+  CHECK(at(check(head + "9.4 Rockets\n\n$$w = \\frac{m_1}{m_2} v$$\n"), 9).verdict != "proved");
+}
+
+TEST_CASE("document search: no proof rests on a slip that pins a quantity with the rows beside it") {
+  // the garbled second link of (1) with the true law (2) forces LC = 1, and from that the
+  // wrong frequency below "follows"; the slip row is left undecided (a given of its own
+  // display may be one more law), so it must not carry a proof either
+  auto lc = check("$$\\omega_0 = \\frac{1}{\\sqrt{L C}}$$\n"                                  // 1
+                  "\n"
+                  "The largest current:\n"
+                  "\n"
+                  "$$i_m = \\omega_0 Q_0 = Q_0 \\sqrt{L C}$$\n"                               // 5
+                  "\n"
+                  "In hertz,\n"
+                  "\n"
+                  "$$f_0 = \\frac{\\omega_0}{2\\pi} = \\frac{1}{2\\pi L C}$$\n");               // 9
+  CHECK(at(lc, 9, 2).verdict != "proved");
+  // an equation of the text pins as well: the lens law of the prose beside a refuted row
+  // forces f = 0, from which any multiple of f "follows"
+  auto lens = check("$$\\frac{1}{s} + \\frac{1}{s'} = \\frac{1}{f}$$\n"                       // 1
+                    "\n"
+                    "$$m = -\\frac{s'}{s} = -\\frac{f}{f - s}$$\n"                            // 3
+                    "\n"
+                    "Since $s s' = f (s + s')$, with $x = s - f$ and $y = s' - f$,\n"
+                    "\n"
+                    "$$m = -\\frac{f}{x} = -\\frac{f}{y}$$\n");                               // 7
+  CHECK(at(lens, 3, 2).verdict == "refuted");
+  CHECK(at(lens, 7, 2).verdict != "proved");
+}
