@@ -530,6 +530,37 @@ using document_detail::Search;
 
 StepResult justify_step(const Derivation& d, const Step& s, const ProveOptions& opt) {
   if (!s.document_row) return check_step(d, s, opt);
+  if (s.document_row->authors_rule) {   // `% by solve (9.6) for v`: checked as the .dc step, no search
+    StepResult r = check_step(d, s, opt);
+    if (r.verdict.kind == VerdictKind::Refuted) {
+      // the document declares no signs: as for a found rule, a counterexample needs one with
+      // every undeclared quantity positive (which is one of the unrestricted reading too)
+      Derivation positive = d;
+      for (const auto& info : d.symbols.all())
+        if (!info.is_function && info.domain.unrestricted()) positive.symbols.narrow_domain(info.name, Domain::positive());
+      positive.index();
+      StepResult pos = check_step(positive, s, opt);
+      if (pos.verdict.kind == VerdictKind::Refuted) {
+        pos.step = r.step;
+        r = pos;
+      } else {
+        Verdict v = r.verdict;
+        v.kind = VerdictKind::Undecided;
+        v.method = "refutation withheld";
+        v.reason = "a counterexample refutes the author's rule, but every one found needs a negative value of a "
+                   "quantity the document declares no sign for" +
+                   std::string(pos.verdict.holds() ? " (the row holds when they are positive: declare them positive, "
+                                                     "e.g. `symbol m : positive`)"
+                                                   : "");
+        r.verdict = v;
+      }
+    }
+    r.found_rule = s.rule.written_name;
+    for (const auto* group : {&s.rule.refs, &s.rule.into})
+      for (const auto& a : *group)
+        if (a.kind == RuleArg::Kind::Label) r.found_rows.push_back(a.label);
+    return r;
+  }
   return Search(d, s, opt).run();
 }
 

@@ -1,8 +1,9 @@
 // The document reader (document.hpp), internal to the document stage: what the rows of a
-// LaTeX or Markdown document mean together. Its members live in two files: reader.cpp (the
-// rows, names, functions, vectors and the steps they become) and reader_text.cpp (what the
+// LaTeX or Markdown document mean together. Its members live in three files: reader.cpp (the
+// rows, names, functions, vectors and the steps they become), reader_text.cpp (what the
 // prose around the displays says: the equations of the text, which of them are in force
-// for a display, "where" clauses, neglected names, lone names).
+// for a display, definitions, "where" clauses, neglected names, lone names, the tags and
+// words it cites) and rule_comments.cpp (the author's own `% by …` rule for a row).
 #pragma once
 #include <functional>
 #include <map>
@@ -162,7 +163,14 @@ class DocumentReader {
   std::vector<std::string> definitions_for(std::size_t k, std::size_t section) const;
   void mark_definitions();
 
+  // `% by solve (9.6), (9.7) for v_1'` in or right after a display: the rule of the row it
+  // follows (every link of it), read as the .dc reader reads a rule line once its tags,
+  // labels and TeX names are written as step labels and .dc names (rule_comments.cpp).
+  void authors_rules();
+  std::string as_dc_rule(const DocDirective& c, const std::string& rest) const;
+
   Document doc_;
+  std::map<std::string, std::vector<std::string>> label_rows_, tag_rows_;   // \label / tag -> step labels
   Derivation d_;
   TexContext ctx_;
   std::vector<ReadRow> rows_;

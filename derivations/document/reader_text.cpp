@@ -359,4 +359,69 @@ bool DocumentReader::restates(const std::string& g, const std::string& p) const 
   return false;
 }
 
+// "(9.6)", "Eq. 9.6", "\eqref{x}" in prose: the tags and labels it names.
+std::vector<std::string> DocumentReader::tags_in(const std::string& prose) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < prose.size(); ++i) {
+    if (prose[i] != '(') continue;
+    std::size_t j = i + 1;
+    while (j < prose.size() && (std::isdigit(static_cast<unsigned char>(prose[j])) || prose[j] == '.' ||
+                                std::isalpha(static_cast<unsigned char>(prose[j]))))
+      ++j;
+    if (j < prose.size() && prose[j] == ')' && j > i + 1 && std::isdigit(static_cast<unsigned char>(prose[i + 1])))
+      out.push_back(prose.substr(i + 1, j - i - 1));
+  }
+  return out;
+}
+
+// The labels the text cites with \eqref{…} or \ref{…}.
+std::vector<std::string> DocumentReader::refs_in(const std::string& prose) {
+  std::vector<std::string> out;
+  for (const char* cs : {"\\eqref{", "\\ref{"})
+    for (std::size_t p = prose.find(cs); p != std::string::npos; p = prose.find(cs, p + 1)) {
+      const std::size_t b = p + std::char_traits<char>::length(cs);
+      const std::size_t e = prose.find('}', b);
+      if (e != std::string::npos) out.push_back(prose.substr(b, e - b));
+    }
+  return out;
+}
+
+std::string DocumentReader::hint_of(const std::string& prose) {
+  // the last two sentences of the last paragraph ("m_2 can be considered infinite. This gives:")
+  std::size_t from = 0;
+  const std::size_t para = prose.rfind("\n\n", prose.find_last_not_of(" \t\n"));
+  if (para != std::string::npos) from = para + 2;
+  int stops = 0;
+  for (std::size_t i = prose.size(); i-- > from + 1;) {
+    const char c = prose[i - 1];
+    if ((c == '.' || c == '!' || c == '?') && std::isspace(static_cast<unsigned char>(prose[i])) &&
+        prose.find_first_not_of(" \t\n", i) != std::string::npos && ++stops == 2) {
+      from = i;
+      break;
+    }
+  }
+  std::string tail = prose.substr(from);
+  if (tail.size() > 400) tail = tail.substr(tail.size() - 400);
+  for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return tail;
+}
+
+// The text after a display when it continues the display's sentence ("where the higher-order
+// term was neglected"): up to its first full stop. A new sentence or paragraph is the next
+// display's business.
+std::string DocumentReader::continuation_of(const std::string& prose) {
+  const std::size_t b = prose.find_first_not_of(" \t\n");
+  if (b == std::string::npos || !std::islower(static_cast<unsigned char>(prose[b]))) return "";
+  std::size_t e = prose.size();
+  for (std::size_t i = b; i + 1 < prose.size(); ++i)
+    if ((prose[i] == '.' && std::isspace(static_cast<unsigned char>(prose[i + 1]))) ||
+        (prose[i] == '\n' && prose[i + 1] == '\n')) {
+      e = i;
+      break;
+    }
+  std::string out = prose.substr(b, std::min<std::size_t>(e - b, 400));
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
 }  // namespace dc::document_detail

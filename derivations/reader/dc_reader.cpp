@@ -540,6 +540,15 @@ Derivation parse_derivation(SourceText source) {
   }
 }
 
+RuleSpec read_rule_line(const Derivation& d, std::size_t index, const std::string& text, const SourcePos& pos) {
+  return reader_detail::DcReader::rule_of(d, index, text, pos);
+}
+
+bool is_rule_name(const std::string& name) {
+  return reader_detail::contains(reader_detail::kRuleNames, name) ||
+         reader_detail::contains(reader_detail::kRewriteAliases, name);
+}
+
 Derivation load_derivation(const std::string& path) {
   SourceText src;
   src.name = path;

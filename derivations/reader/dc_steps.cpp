@@ -318,6 +318,22 @@ void DcReader::check_ref(const std::string& label, const SourcePos& p) {
        static_cast<int>(label.size()));
 }
 
+RuleSpec DcReader::rule_of(const Derivation& d, std::size_t index, const std::string& text, const SourcePos& pos) {
+  DcReader r(d.source);
+  r.d_.symbols = d.symbols;
+  for (std::size_t i = 0; i < index && i < d.steps.size(); ++i) {
+    r.defined_[d.steps[i].label] = r.d_.steps.size();
+    r.d_.steps.push_back(d.steps[i]);
+  }
+  for (const auto& st : d.steps) r.all_labels_.emplace(st.label, st.pos);
+  if (index < d.steps.size()) r.current_label_ = d.steps[index].label;
+  Span s;
+  s.text = text;
+  for (std::size_t i = 0; i < text.size(); ++i) s.pos.push_back(SourcePos{pos.file, pos.line, pos.col + static_cast<int>(i)});
+  s.end = SourcePos{pos.file, pos.line, pos.col + static_cast<int>(text.size())};
+  return r.rule_line(s, pos);
+}
+
 RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
   RuleSpec spec;
   spec.pos = by_pos;

@@ -73,6 +73,7 @@ struct DocumentRow {
   std::string hint;                 // words of the prose before the display ("substitut", "integrat")
   std::string not_read;             // non-empty: why the row is not checked (notation not read yet)
   std::vector<std::string> vectors; // names written bold or with an arrow
+  bool authors_rule = false;        // the author wrote the rule (`% by …`): checked as a .dc step
 };
 
 struct Step {
@@ -140,6 +141,14 @@ struct Derivation {
 // checker to report (see Step::erratum) and the corrected claim is used.
 Derivation load_derivation(const std::string& path);
 Derivation parse_derivation(SourceText source);
+
+// The rule line of one step written by another front end (a document's `% by solve (9.6),
+// (9.7) for v_1p` comment, in .dc notation after its refs and names are translated): read as
+// the .dc reader reads `by …` for steps[index] of d, against the steps before it and the
+// declared names. `text` is what follows "by"; `pos` is where it starts. Throws InputError.
+RuleSpec read_rule_line(const Derivation& d, std::size_t index, const std::string& text, const SourcePos& pos);
+// Is `name` a rule of the .dc language (or an alias of rewrite)?
+bool is_rule_name(const std::string& name);
 
 // A whole side of a `by limit` claim that states what no expression can: `oo`, `-oo`, or
 // `undefined` (the limit does not exist; a declared symbol of that name keeps its meaning).

@@ -106,16 +106,24 @@ class Splitter {
                                                 doc_.source.line(p.line)));
   }
 
-  void directive(std::size_t from, std::size_t to) {
+  void directive(std::size_t from, std::size_t to, bool rule_ok = true) {
     std::size_t p = from;
     while (p < to && std::isspace(static_cast<unsigned char>(t_[p]))) ++p;
     static constexpr std::string_view kWord = "derivcheck:";
-    if (t_.compare(p, kWord.size(), kWord) != 0) return;
-    p += kWord.size();
-    while (p < to && t_[p] == ' ') ++p;
+    const bool addressed = t_.compare(p, kWord.size(), kWord) == 0;
+    if (addressed) {
+      p += kWord.size();
+      while (p < to && t_[p] == ' ') ++p;
+    }
     std::size_t e = to;
     while (e > p && std::isspace(static_cast<unsigned char>(t_[e - 1]))) --e;
-    doc_.directives.push_back({t_.substr(p, e - p), lines_.at(p)});
+    if (rule_ok && e > p + 3 && t_.compare(p, 3, "by ") == 0) {
+      std::size_t q = p + 3;
+      while (q < e && t_[q] == ' ') ++q;
+      doc_.rule_comments.push_back({t_.substr(q, e - q), lines_.at(q), addressed});
+      return;
+    }
+    if (addressed) doc_.directives.push_back({t_.substr(p, e - p), lines_.at(p)});
   }
 
   void blank(std::size_t from, std::size_t to) {
@@ -150,7 +158,7 @@ class Splitter {
         blank(0, e);
         return;
       }
-      directive(p, e);
+      directive(p, e, false);
       p = e + 1;
     }
   }

@@ -46,6 +46,7 @@ struct DocInline {
 struct DocDirective {
   std::string text;          // what follows "derivcheck:" (a .dc declaration line)
   SourcePos origin;          // position of text[0]
+  bool addressed = false;    // written after "derivcheck:" (a rule comment: then WORD must be a rule)
 };
 
 struct Document {
@@ -54,6 +55,10 @@ struct Document {
   std::vector<DocDisplay> displays;
   std::vector<DocInline> inlines;
   std::vector<DocDirective> directives;
+  // `% by solve (9.6), (9.7) for v_1'` (or `<!-- by … -->`, `% derivcheck: by …`): the rule of
+  // the displayed row the comment follows, in .dc rule syntax; text is what follows "by ".
+  // A comment `by WORD` whose WORD is no rule is ordinary prose (the reader decides).
+  std::vector<DocDirective> rule_comments;
   std::string macro_text;    // the text holding \newcommand / \def (LaTeX: the whole document)
   // Positioned warnings that stop nothing: a display opened and never closed is read as text
   // (the rest of the document is still checked).

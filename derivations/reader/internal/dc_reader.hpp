@@ -108,6 +108,9 @@ class DcReader {
   explicit DcReader(SourceText src) { d_.source = std::move(src); }
 
   Derivation run();
+  // The rule line `text` (what follows "by", starting at pos) of d.steps[index]: see
+  // read_rule_line in derivation.hpp.
+  static RuleSpec rule_of(const Derivation& d, std::size_t index, const std::string& text, const SourcePos& pos);
   // After run(): what draws each figure that names it, by its index in Derivation::prose.
   const std::map<std::size_t, FigureSpec>& figures() const { return figures_; }
 
