@@ -308,6 +308,8 @@ StepResult Search::attempt_rule(RuleSpec rule, const Relation* claim, const Deri
     ++*work_;
     StepResult r = check_step(on ? *on : d_, t, opt_);
     r.step = &s_;
+    r.found_line = rule_line_text(t.rule);
+    if (claim) r.found_claim = t.claim_text;
     return r;
   } catch (const InputError& e) {
     StepResult r;
@@ -556,6 +558,7 @@ StepResult justify_step(const Derivation& d, const Step& s, const ProveOptions& 
       }
     }
     r.found_rule = s.rule.written_name;
+    r.found_line = rule_line_text(s.rule);
     for (const auto* group : {&s.rule.refs, &s.rule.into})
       for (const auto& a : *group)
         if (a.kind == RuleArg::Kind::Label) r.found_rows.push_back(a.label);

@@ -145,6 +145,8 @@ std::string encode(const StepResult& res) {
   w.str(res.found_rule);
   w.u64(res.found_rows.size());
   for (const auto& row : res.found_rows) w.str(row);
+  w.str(res.found_line);
+  w.str(res.found_claim);
   return w.take();
 }
 
@@ -165,6 +167,8 @@ StepResult decode_step_result(const std::string& bytes, const Step* step) {
   res.found_rule = r.str();
   const std::uint64_t rows = r.u64();
   for (std::uint64_t i = 0; i < rows; ++i) res.found_rows.push_back(r.str());
+  res.found_line = r.str();
+  res.found_claim = r.str();
   return res;
 }
 

@@ -544,6 +544,44 @@ RuleSpec read_rule_line(const Derivation& d, std::size_t index, const std::strin
   return reader_detail::DcReader::rule_of(d, index, text, pos);
 }
 
+std::string rule_line_text(const RuleSpec& r) {
+  auto arg = [](const RuleArg& a) -> std::string {
+    switch (a.kind) {
+      case RuleArg::Kind::Label:
+      case RuleArg::Kind::Symbol: return a.label;
+      case RuleArg::Kind::Equation: return to_text(a.equation);
+      case RuleArg::Kind::Value: return to_text(a.value);
+    }
+    return a.label;
+  };
+  auto list = [&](const std::vector<RuleArg>& v) {
+    std::string out;
+    for (const auto& a : v) out += (out.empty() ? "" : ", ") + arg(a);
+    return out;
+  };
+  const std::string& n = r.name;
+  std::string out = "by " + (r.written_name.empty() ? n : r.written_name);
+  if (n == "limit" || n == "series") {
+    if (r.var) out += " " + arg(*r.var);
+    if (r.point) out += " -> " + arg(*r.point) + (r.dir > 0 ? "+" : r.dir < 0 ? "-" : "");
+    if (!r.into.empty()) out += " of " + list(r.into);
+    if (r.order && n == "series") out += " to order " + std::to_string(*r.order);
+  } else if (n == "first_order") {
+    out += " " + list(r.smalls) + " of " + list(r.into);
+  } else if (n == "stationary" || n == "maximum" || n == "minimum" || n == "instance") {
+    if (!r.into.empty()) out += " of " + list(r.into);
+    if (r.var) out += " wrt " + arg(*r.var);
+  } else {
+    if (!r.refs.empty()) out += " " + list(r.refs);
+    if (!r.into.empty()) out += " into " + list(r.into);
+    if (!r.unknowns.empty()) out += " for " + list(r.unknowns);
+    if (r.var) out += " wrt " + arg(*r.var);
+    if (r.point) out += " from " + arg(*r.point);
+  }
+  if (!r.with.empty()) out += " with " + list(r.with);
+  return out;
+}
+
 bool is_rule_name(const std::string& name) {
   return reader_detail::contains(reader_detail::kRuleNames, name) ||
          reader_detail::contains(reader_detail::kRewriteAliases, name);

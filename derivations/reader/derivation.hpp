@@ -147,6 +147,9 @@ Derivation parse_derivation(SourceText source);
 // the .dc reader reads `by …` for steps[index] of d, against the steps before it and the
 // declared names. `text` is what follows "by"; `pos` is where it starts. Throws InputError.
 RuleSpec read_rule_line(const Derivation& d, std::size_t index, const std::string& text, const SourcePos& pos);
+// A rule as its .dc line: `by solve L5, L6 for v1p, v2p`, `by limit b -> oo of L3` (the
+// inverse of the reader's rule line, for rules built by a program).
+std::string rule_line_text(const RuleSpec& r);
 // Is `name` a rule of the .dc language (or an alias of rewrite)?
 bool is_rule_name(const std::string& name);
 

@@ -26,6 +26,11 @@ struct StepResult {
   // .dc `by` line would name it ("rewrite", "follows", "limit", "given") and the steps it used.
   std::string found_rule;
   std::vector<std::string> found_rows;
+  // The rule line that was checked, in .dc syntax (`by solve L5, L6 for v1p`), and the claim
+  // it was checked on when that is not the row as written (a row of differentials divided by
+  // dt): what `derivcheck dc` writes for the row.
+  std::string found_line;
+  std::string found_claim;
 };
 
 StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt = {});

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <map>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -52,7 +53,7 @@ TEST_CASE("seed handout: checked as written, nothing refuted, v_e reported") {
                << ", undecided " << c.undecided);
   CHECK(c.refuted == 0);
   CHECK(c.rows >= 80);
-  CHECK(c.derived >= 33);   // measured 33 (docs/documents.md); the issue asks for 40
+  CHECK(c.derived >= 38);   // measured 38 (docs/documents.md); the issue asks for 40
   bool v_e = false;
   for (const auto& f : j["files"])
     if (f.contains("diagnostics"))
@@ -119,5 +120,46 @@ TEST_CASE("annotate: the author's LaTeX with a note after each display, and it c
   const int rc = std::system(("cd " + dir + " && pdflatex -interaction=nonstopmode -halt-on-error "
                               "projectile.checked.tex > /dev/null 2>&1").c_str());
   CHECK(rc == 0);
+  std::system(("rm -rf " + dir).c_str());
+}
+
+TEST_CASE("dc: the document as a .dc file that checks to the same verdicts") {
+  const std::string dir = "dc_test_" + std::to_string(::getpid());
+  REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+  for (const std::string doc : {std::string("../shared/handout9.md"), std::string("tests/data/documents/projectile.tex")}) {
+    INFO(doc);
+    const std::string out = dir + "/doc.dc";
+    cli_test::Run made = cli_test::run({"dc", cli_test::src(doc), "-o", out});
+    CHECK(made.err.empty());
+    cli_test::Run d = cli_test::run({"check", "--json", cli_test::src(doc)});
+    cli_test::Run c = cli_test::run({"check", "--json", out});
+    REQUIRE(c.exit_code != 2);   // the .dc file reads
+    const auto dj = nlohmann::json::parse(d.out);
+    const auto cj = nlohmann::json::parse(c.out);
+    std::map<std::string, std::string> verdict;   // .dc label -> verdict in the document
+    for (const auto& f : dj["files"])
+      for (const auto& s : f["steps"]) {
+        std::string label = s["label"];
+        std::replace(label.begin(), label.end(), '.', '_');
+        verdict[label] = s["verdict"];
+      }
+    int proved = 0;
+    for (const auto& f : cj["files"])
+      for (const auto& s : f["steps"]) {
+        const std::string label = s["label"];
+        INFO(label);
+        REQUIRE(verdict.count(label));
+        const std::string was = verdict[label];
+        const std::string now = s["verdict"];
+        // a derived row keeps its verdict (first order: a premise, noted), a refuted one stays
+        // refuted, a row with no justification becomes a premise marked TODO
+        if (was == "proved" && now != "proved") CHECK(s["method"] == "given");
+        if (was == "refuted") CHECK(now == "refuted");
+        if (was == "premise") CHECK(now == "premise");
+        if (was == "undecided") CHECK(now == "premise");
+        proved += now == "proved";
+      }
+    CHECK(proved >= 10);
+  }
   std::system(("rm -rf " + dir).c_str());
 }
