@@ -94,6 +94,21 @@ StepResult Search::run() {
   if (id.verdict.holds() && usable(id)) return found(id, "identity", {});
   // 2. a new name: a given
   if (row_.relation == "=" && introduces_names()) {
+    // new only as rates: dv/dt where the rows before speak of the increment Delta_v (and t
+    // where they speak of Delta_t) — the rates of an earlier balance, if they follow from it
+    bool rates_only = !nested_;
+    std::set<std::string> before;
+    for (const auto& st : d_.steps) {
+      if (&st == &s_) break;
+      for (const auto& side : st.claim.sides) names_of(side, before);
+    }
+    for (const auto& n : new_names_) {
+      const std::size_t of = n.find("__of_");
+      const std::string increment = "Delta_" + (of == std::string::npos ? n : n.substr(0, of));
+      rates_only = rates_only && before.count(increment) > 0;
+    }
+    if (rates_only)
+      if (auto r = by_rates()) return *r;
     res.premise = true;
     res.found_rule = "given";
     Verdict v = proved("given", "introduces " + join(new_names_) + ": a law or a definition, taken as written");
@@ -141,6 +156,8 @@ StepResult Search::run() {
     if (auto r = by_solve()) return *r;
     // 6. agreement to first order in the small quantities the text neglects
     if (auto r = by_first_order()) return *r;
+    // 7. the rates of a balance of increments ("taking the time derivative")
+    if (auto r = by_rates()) return *r;
   }
   if (row_.relation == "approx")
     return finish(res, undecided("approximation", "an approximate relation: it does not follow exactly "

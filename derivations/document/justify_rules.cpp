@@ -2,6 +2,8 @@
 // row takes or the regime an approximate row holds in, solving for the subject of a row, and
 // agreement to first order in the small quantities the text neglects.
 #include <algorithm>
+#include <functional>
+#include <map>
 
 #include "derivations/calculus/big_o.hpp"
 #include "derivations/document/search.hpp"
@@ -169,6 +171,116 @@ std::optional<StepResult> Search::by_first_order() {
   } catch (const std::exception&) {
     return std::nullopt;
   }
+}
+
+std::optional<StepResult> Search::by_rates() {
+  static const char* const kWords[] = {"derivative", "rate", "lim", "per unit time", "divid", "differentiat"};
+  bool said = false;
+  for (const char* w : kWords) said = said || row_.hint.find(w) != std::string::npos;
+  if (!said) return std::nullopt;
+  // the variable of the claim's derivatives (t in dv/dt), and its functions by base name
+  std::string var;
+  std::map<std::string, std::string> function_of;   // base name -> function id (v -> v__of_t)
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& n) {
+      if (n.kind == NodeKind::Call && n.text == "diff" && n.args.size() == 2 && n.args[0].kind == NodeKind::Call &&
+          n.args[0].args.size() == 1 && n.args[0].args[0].kind == NodeKind::Symbol && n.args[1].kind == NodeKind::Symbol) {
+        const std::string& id = n.args[0].text;
+        const std::size_t of = id.find("__of_");
+        if (of == std::string::npos) return;
+        var = n.args[1].text;
+        function_of[id.substr(0, of)] = id;
+      }
+    });
+  if (var.empty()) return std::nullopt;
+  for (const auto& label : source_rows()) {
+    if (late()) break;
+    const Step* st = d_.find(label);
+    if (!st || st->claim.sides.size() != 2) continue;
+    // the increments of the row: each a Delta_ name whose quantity is a function of var here
+    std::set<std::string> names;
+    for (const auto& side : st->claim.sides) names_of(side, names);
+    std::map<std::string, Node> rate;   // Delta_x -> dx/dt (Delta_t -> 1)
+    bool ok = true;
+    for (const auto& n : names) {
+      if (n.rfind("Delta_", 0) != 0) continue;
+      const std::string base = n.substr(6);
+      Node r;
+      if (base == var) {
+        r.kind = NodeKind::Number;
+        r.text = "1";
+      } else if (auto f = function_of.find(base); f != function_of.end()) {
+        Node t;
+        t.kind = NodeKind::Symbol;
+        t.text = var;
+        Node fx;
+        fx.kind = NodeKind::Call;
+        fx.text = f->second;
+        fx.args = {t};
+        r.kind = NodeKind::Call;
+        r.text = "diff";
+        r.args = {fx, t};
+      } else {
+        ok = false;   // an increment of a quantity the claim does not differentiate
+        break;
+      }
+      rate[n] = r;
+    }
+    if (!ok || rate.empty()) continue;
+    // linear and homogeneous in the increments, each factor free of them
+    try {
+      const GiNaC::ex e = (to_ginac(st->claim.sides[0], d_.symbols) - to_ginac(st->claim.sides[1], d_.symbols)).expand();
+      GiNaC::exmap zero;
+      std::vector<GiNaC::ex> incs;
+      for (const auto& [n, r] : rate) {
+        const SymbolInfo* info = d_.symbols.find(n);
+        if (!info) throw std::runtime_error("undeclared");
+        zero[info->sym] = 0;
+        incs.push_back(info->sym);
+      }
+      if (!e.subs(zero).expand().is_zero()) continue;
+      bool linear = true;
+      for (const auto& x : incs) {
+        if (e.degree(x) != 1) linear = false;
+        const GiNaC::ex c = e.coeff(x, 1);
+        for (const auto& y : incs) linear = linear && !c.has(y);
+      }
+      if (!linear) continue;
+    } catch (const std::exception&) {
+      continue;
+    }
+    Relation rates;
+    for (const auto& side : st->claim.sides) {
+      Node copy = side;
+      std::function<void(Node&)> put = [&](Node& x) {
+        if (x.kind == NodeKind::Symbol)
+          if (auto it = rate.find(x.text); it != rate.end()) {
+            const SourcePos pos = x.pos;
+            x = it->second;
+            x.pos = pos;
+            return;
+          }
+        for (auto& a : x.args) put(a);
+      };
+      put(copy);
+      rates.sides.push_back(std::move(copy));
+    }
+    RuleSpec rule;
+    rule.name = rule.written_name = "rewrite";
+    RuleArg a;
+    a.kind = RuleArg::Kind::Equation;
+    a.equation = rates;
+    a.pos = s_.claim_pos;
+    rule.refs.push_back(std::move(a));
+    for (const auto& l : row_.locals) rule.refs.push_back(label_arg(l));
+    for (const auto& l : row_.where) rule.refs.push_back(label_arg(l));
+    StepResult r = attempt_rule(std::move(rule));
+    if (!usable(r) || !r.verdict.holds()) continue;
+    r.verdict.method = "rates of " + label + " (each increment over " + var + " divided by it, in the limit): " + r.verdict.method;
+    r.found_line.clear();   // a .dc rule line does not state it
+    return found(r, "rates", {label});
+  }
+  return std::nullopt;
 }
 
 }  // namespace dc::document_detail

@@ -79,6 +79,13 @@ class Search {
   // \Delta or \delta), each scaled by one eps -> 0. Only when the text says so; never refutes.
   std::optional<StepResult> by_first_order();
 
+  // `m_r\frac{dv}{dt} - u_e\frac{dm}{dt} = 0` "taking the time derivative" of the balance
+  // `m_r\Delta v - u_e\Delta m = 0`: a relation linear in the increments (each Delta_x times a
+  // factor free of increments, Delta_t the step of the variable) holds for the increments over
+  // any interval, so divided by it and in the limit each Delta_x becomes dx/dt (Delta_t
+  // becomes 1). Only when the text speaks of a derivative, a rate or a limit.
+  std::optional<StepResult> by_rates();
+
   // The names of the claim that no earlier step mentions.
   bool introduces_names();
   std::vector<std::string> new_names_of(const Step& s) const;

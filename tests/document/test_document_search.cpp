@@ -178,3 +178,18 @@ TEST_CASE("document search: no proof rests on a slip that pins a quantity with t
   CHECK(at(lens, 3, 2).verdict == "refuted");
   CHECK(at(lens, 7, 2).verdict != "proved");
 }
+
+TEST_CASE("document search: the rates of a balance of increments, when the text takes the derivative") {
+  const std::string head = "$$M \\Delta v = u \\Delta m + F \\Delta t$$\n"        // 1
+                           "\n"
+                           "Dividing by the time step and taking the limit:\n"
+                           "\n";
+  CHECK(at(check(head + "$$M \\frac{dv}{dt} = u \\frac{dm}{dt} + F$$\n"), 5).verdict == "proved");
+  CHECK(at(check(head + "$$M \\frac{dv}{dt} = u \\frac{dm}{dt} - F$$\n"), 5).verdict != "proved");
+  // without words for a derivative the increments are not read as rates
+  CHECK(at(check("$$M \\Delta v = u \\Delta m + F \\Delta t$$\n\nSo\n\n$$M \\frac{dv}{dt} = u \\frac{dm}{dt} + F$$\n"), 5)
+            .verdict != "proved");
+  // a relation that is not linear in the increments gives no rates
+  CHECK(at(check("$$M \\Delta v = u \\Delta m \\Delta v + F \\Delta t$$\n\nTaking the limit:\n\n"
+                 "$$M \\frac{dv}{dt} = F$$\n"), 5).verdict != "proved");
+}
