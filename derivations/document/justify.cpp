@@ -176,6 +176,9 @@ StepResult Search::run() {
       if (more.empty()) break;
       std::vector<std::string> wider = refs;
       wider.insert(wider.end(), more.begin(), more.end());
+      // (no wider than a handful of rows: eliminating through many rows with radicals can
+      // outrun any budget, and the doubt that asked for the widening then stands)
+      if (wider.size() > kMaxWidened) break;
       StepResult w = attempt(wider);
       if (!usable(w)) break;
       if (w.verdict.holds() && !rests_on_a_slip(wider)) return found(w, "rewrite", wider);

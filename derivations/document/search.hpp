@@ -180,6 +180,7 @@ class Search {
   int own_work_ = 0;
   int* work_;
   static constexpr int kMaxWork = 60;
+  static constexpr std::size_t kMaxWidened = 8;   // rows in a refutation's set widened by setters
   bool late() const { return *work_ >= kMaxWork; }
 };
 
