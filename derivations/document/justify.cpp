@@ -18,6 +18,8 @@
 // derivative or integral in it, no words of a regime or a law in the prose before the display,
 // and no declaration under which it would hold. Anything else is undecided with the reason.
 #include <algorithm>
+#include <functional>
+#include <map>
 #include <cctype>
 
 #include "derivations/document/search.hpp"
@@ -121,6 +123,9 @@ StepResult Search::run() {
     if (late()) break;
     StepResult r = attempt(refs);
     if (!usable(r)) continue;
+    // the rows with their plain names read at the instant, as the claim's functions
+    if (!r.verdict.holds() && !late())
+      if (auto lifted = attempt_lifted(refs); lifted && usable(*lifted) && lifted->verdict.holds()) r = *lifted;
     if (r.verdict.holds()) {
       std::vector<std::string> slips;
       if (!rests_on_a_slip(refs, &slips)) return found(r, "rewrite", refs);
@@ -289,6 +294,52 @@ RuleArg Search::node_arg(const Node& n, RuleArg::Kind kind) const {
   a.value = n;
   a.pos = s_.claim_pos;
   return a;
+}
+
+std::optional<StepResult> Search::attempt_lifted(const std::vector<std::string>& refs) {
+  // the claim's functions by base name (m_r -> m_r__of_t(t))
+  std::map<std::string, Node> lift;
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& n) {
+      if (n.kind != NodeKind::Call || n.args.size() != 1 || n.args[0].kind != NodeKind::Symbol) return;
+      const std::size_t of = n.text.find("__of_");
+      if (of != std::string::npos && n.text.substr(of + 5) == n.args[0].text) lift[n.text.substr(0, of)] = n;
+    });
+  if (lift.empty()) return std::nullopt;
+  RuleSpec rule;
+  rule.name = rule.written_name = "rewrite";
+  std::set<std::string> lifted;
+  for (const auto& label : refs) {
+    const Step* st = d_.find(label);
+    if (!st || st->claim.sides.size() < 2) return std::nullopt;
+    // the subject a row sets keeps its value at the instant it speaks of (`v = v_0`)
+    const std::string subject = st->claim.sides.front().kind == NodeKind::Symbol ? st->claim.sides.front().text : "";
+    RuleArg a = label_arg(label);
+    a.kind = RuleArg::Kind::Equation;
+    a.equation.sides = {st->claim.sides.front(), st->claim.sides.back()};
+    for (auto& side : a.equation.sides) {
+      std::function<void(Node&)> put = [&](Node& x) {
+        if (x.kind == NodeKind::Symbol && x.text != subject)
+          if (auto it = lift.find(x.text); it != lift.end()) {
+            const SourcePos pos = x.pos;
+            x = it->second;
+            x.pos = pos;
+            lifted.insert(it->first);
+            return;
+          }
+        for (auto& arg : x.args) put(arg);
+      };
+      put(side);
+    }
+    rule.refs.push_back(std::move(a));
+  }
+  if (lifted.empty()) return std::nullopt;
+  StepResult r = attempt_rule(std::move(rule));
+  std::string names;
+  for (const auto& n : lifted) names += (names.empty() ? "" : ", ") + n;
+  r.verdict.method = "rows read with " + names + " at the instant (as functions of the claim's variable): " + r.verdict.method;
+  r.found_line.clear();   // the rows as written do not give it in .dc
+  return r;
 }
 
 StepResult Search::attempt(const std::vector<std::string>& refs) {

@@ -86,6 +86,12 @@ class Search {
   // becomes 1). Only when the text speaks of a derivative, a rate or a limit.
   std::optional<StepResult> by_rates();
 
+  // The rewrite from `refs` with their plain names read as the claim's functions of its
+  // variable (`m_r a = u_e\mu - m_r g` as m_r(t) a = …, beside `m_r\frac{dv}{dt}`): a law
+  // holds at every instant. The name a row sets keeps its value (`v = v_0` is one instant).
+  // nullopt when no name needs lifting.
+  std::optional<StepResult> attempt_lifted(const std::vector<std::string>& refs);
+
   // The names of the claim that no earlier step mentions.
   bool introduces_names();
   std::vector<std::string> new_names_of(const Step& s) const;

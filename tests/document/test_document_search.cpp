@@ -193,3 +193,25 @@ TEST_CASE("document search: the rates of a balance of increments, when the text 
   CHECK(at(check("$$M \\Delta v = u \\Delta m \\Delta v + F \\Delta t$$\n\nTaking the limit:\n\n"
                  "$$M \\frac{dv}{dt} = F$$\n"), 5).verdict != "proved");
 }
+
+TEST_CASE("document search: a law with plain names read at each instant beside the claim's functions") {
+  // q is plain in the loop law and a function of t where it is differentiated
+  const std::string head = "$$I = \\frac{dq}{dt} \\quad (1)$$\n"                        // 1
+                           "\n"
+                           "$$E = R I + \\frac{q}{C} \\quad (2)$$\n"                     // 3
+                           "\n"
+                           "Putting (1) into (2):\n"
+                           "\n";
+  CHECK(at(check(head + "$$\\frac{dq}{dt} = \\frac{E}{R} - \\frac{q}{R C}$$\n"), 7).verdict == "proved");
+  CHECK(at(check(head + "$$\\frac{dq}{dt} = \\frac{E}{R} + \\frac{q}{R C}$$\n"), 7).verdict != "proved");
+  // the name a row sets keeps its value at its instant: `v = v_0` does not make v constant
+  auto start = check("$$v = v_0 + w$$\n"                                              // 1
+                     "\n"
+                     "$$m \\frac{dv}{dt} = F$$\n"                                       // 3
+                     "\n"
+                     "Then\n"
+                     "\n"
+                     "$$\\frac{dv}{dt} = 0$$\n");                                       // 7
+  CHECK(at(start, 3).verdict == "premise");
+  CHECK(at(start, 7).verdict != "proved");
+}
