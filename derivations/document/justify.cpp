@@ -34,6 +34,16 @@ void names_of(const Node& n, std::set<std::string>& out) {
   for (const auto& a : n.args) names_of(a, out);
 }
 
+// The names of a step's claim without the variables of its functions (t in dp/dt says
+// nothing about which rows a row uses or shares a quantity with).
+static std::set<std::string> quantities_of(const Step& st) {
+  std::set<std::string> out;
+  for (const auto& side : st.claim.sides) names_of(side, out);
+  for (const auto& n : std::set<std::string>(out))
+    if (const std::size_t of = n.find("__of_"); of != std::string::npos) out.erase(n.substr(of + 5));
+  return out;
+}
+
 void walk_nodes(const Node& n, const std::function<void(const Node&)>& f) {
   f(n);
   for (const auto& a : n.args) walk_nodes(a, f);
@@ -487,14 +497,6 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
   return out;
 }
 
-static std::set<std::string> quantities_of(const Step& st) {
-  std::set<std::string> out;
-  for (const auto& side : st.claim.sides) names_of(side, out);
-  for (const auto& n : std::set<std::string>(out))
-    if (const std::size_t of = n.find("__of_"); of != std::string::npos) out.erase(n.substr(of + 5));
-  return out;
-}
-
 // A proof from several rows is worth nothing when one of them is a slip: the slip and the row
 // it garbles pin a quantity to a special value, and from that anything about it follows
 // (`w_2 = …/(m_1 + m_1)` beside the right `w_2` "proves" m_1 m_2 = 0). So each row used that
@@ -562,8 +564,6 @@ bool Search::in_force(const Step& st) const {
 
 // Earlier rows in force here (their conditions hold here too), by how many of the claim's
 // names they mention, the nearer first on a tie.
-// The names of a step's claim without the variables of its functions (t in dp/dt says
-// nothing about which rows a row uses or shares a quantity with).
 std::vector<std::string> Search::most_relevant() const {
   const std::set<std::string> mine = quantities_of(s_);
   std::vector<std::pair<int, std::size_t>> scored;   // (-score, -index)
