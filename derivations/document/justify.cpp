@@ -121,6 +121,9 @@ StepResult Search::run() {
     }
     if (rates_only)
       if (auto r = by_rates()) return *r;
+    // a solution of an earlier rate row whose new names are its constants of integration
+    if (!nested_)
+      if (auto r = by_integration()) return *r;
     res.premise = true;
     res.found_rule = "given";
     Verdict v = proved("given", "introduces " + join(new_names_) + ": a law or a definition, taken as written");
@@ -366,8 +369,24 @@ StepResult Search::attempt(const std::vector<std::string>& refs) {
 StepResult Search::attempt_positive(const std::vector<std::string>& refs, const Relation* claim) {
   if (!positive_) {
     positive_ = std::make_unique<Derivation>(d_);
+    // (not a name that an equation of the text in force here, or for the rows of the two
+    // displays before, sets to zero or below: `neglect D`, `$\theta = 0$`)
+    std::set<std::string> conditions(row_.locals.begin(), row_.locals.end());
+    conditions.insert(row_.where.begin(), row_.where.end());
+    for (const auto& st : d_.steps)
+      if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
+          st.document_row->display + 2 >= row_.display)
+        conditions.insert(st.document_row->locals.begin(), st.document_row->locals.end());
+    std::set<std::string> zero;
+    for (const auto& label : conditions)
+      if (const Step* st = d_.find(label); st && st->claim.sides.size() == 2 && st->claim.sides[0].kind == NodeKind::Symbol) {
+        const Node& v = st->claim.sides[1];
+        if ((v.kind == NodeKind::Number && (v.text == "0" || v.text == "0.0")) || v.kind == NodeKind::Neg)
+          zero.insert(st->claim.sides[0].text);
+      }
     for (const auto& info : d_.symbols.all())
-      if (!info.is_function && info.domain.unrestricted()) positive_->symbols.narrow_domain(info.name, Domain::positive());
+      if (!info.is_function && info.domain.unrestricted() && !zero.count(info.name))
+        positive_->symbols.narrow_domain(info.name, Domain::positive());
     positive_->index();
   }
   RuleSpec rule;

@@ -283,4 +283,124 @@ std::optional<StepResult> Search::by_rates() {
   return std::nullopt;
 }
 
+std::optional<StepResult> Search::by_integration() {
+  static const char* const kWords[] = {"integrat", "solution", "solving"};
+  bool said = false;
+  for (const char* w : kWords) said = said || row_.hint.find(w) != std::string::npos;
+  if (!said || s_.claim.sides.size() != 2 || s_.claim.sides[0].kind != NodeKind::Symbol) return std::nullopt;
+  const std::string subject = s_.claim.sides[0].text;
+  // the constants of integration: names no earlier row mentions, none of them a function
+  for (const auto& n : new_names_)
+    if (const SymbolInfo* info = d_.symbols.find(n); !info || info->is_function) return std::nullopt;
+  // the rows that may be the equation: the usual sources, and every row of the two displays
+  // before this one (the case of a rate row may have ended in the words between, "which is
+  // integrated"; it is used with the conditions it was written under)
+  std::vector<std::string> sources = source_rows();
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
+        st.document_row->display + 2 >= row_.display && usable_ref(st.label) &&
+        std::find(sources.begin(), sources.end(), st.label) == sources.end())
+      sources.push_back(st.label);
+  }
+  std::optional<StepResult> refuted;
+  std::vector<std::string> refuted_rows;
+  std::string refuted_method;
+  for (const auto& label : sources) {
+    if (late()) break;
+    const Step* st = d_.find(label);
+    if (!st || st->claim.sides.size() != 2) continue;
+    // the equation's variable and its functions, by base name; it must differentiate the subject
+    std::string var;
+    std::map<std::string, Node> fn;
+    bool rate = false;
+    for (const auto& side : st->claim.sides)
+      walk_nodes(side, [&](const Node& n) {
+        if (n.kind == NodeKind::Call && n.text == "diff" && !n.args.empty() && n.args[0].kind == NodeKind::Call &&
+            n.args[0].text.rfind(subject + "__of_", 0) == 0)
+          rate = true;
+        if (n.kind != NodeKind::Call || n.args.size() != 1 || n.args[0].kind != NodeKind::Symbol) return;
+        const std::size_t of = n.text.find("__of_");
+        if (of == std::string::npos || n.text.substr(of + 5) != n.args[0].text) return;
+        var = n.args[0].text;
+        fn[n.text.substr(0, of)] = n;
+      });
+    if (!rate || var.empty() || !fn.count(subject)) continue;
+    std::vector<std::string> constants;
+    for (const auto& n : new_names_)
+      if (!fn.count(n)) constants.push_back(n);
+    if (constants.empty()) continue;   // nothing in the row for the starting value to fix
+    // the row's value of the subject, its other names read as the equation reads them
+    Node value = s_.claim.sides[1];
+    std::function<void(Node&)> lift = [&](Node& x) {
+      if (x.kind == NodeKind::Symbol)
+        if (auto it = fn.find(x.text); it != fn.end()) {
+          const SourcePos pos = x.pos;
+          x = it->second;
+          x.pos = pos;
+          return;
+        }
+      for (auto& a : x.args) lift(a);
+    };
+    lift(value);
+    // the equation with the subject's function replaced by that value: an identity when the
+    // row solves it
+    const std::string id = fn.at(subject).text;
+    Relation solved = st->claim;
+    std::function<void(Node&)> put = [&](Node& x) {
+      if (x.kind == NodeKind::Call && x.text == id) {
+        const SourcePos pos = x.pos;
+        x = value;
+        x.pos = pos;
+        return;
+      }
+      for (auto& a : x.args) put(a);
+    };
+    for (auto& side : solved.sides) put(side);
+    RuleSpec rule;
+    rule.name = rule.written_name = "rewrite";
+    std::vector<std::string> used{label};
+    if (st->document_row)
+      for (const auto& l : st->document_row->locals) used.push_back(l);   // the equation's own case
+    for (const auto& l : row_.locals) used.push_back(l);
+    for (const auto& l : row_.where) used.push_back(l);
+    for (const auto& l : used)
+      if (l != label) rule.refs.push_back(label_arg(l));
+    StepResult r = attempt_rule(std::move(rule), &solved);
+    const std::string what = "solving " + label + " (" + id + " replaced by the row's value)";
+    if (usable(r) && r.verdict.holds()) {
+      r.verdict.method = what + ": it holds, " + join(constants) +
+                         (constants.size() == 1 ? " the constant" : " the constants") + " of integration: " +
+                         r.verdict.method;
+      r.found_line.clear();   // a .dc rule line does not state it
+      return found(r, "integrate", used);
+    }
+    if (usable(r) && r.verdict.kind == VerdictKind::Refuted && !refuted) {
+      // no value of the constants makes the row solve the equation. A refutation when every
+      // other name of the row is one of the equation's (so what varies with the variable is
+      // what the equation lets vary) and a counterexample holds with every quantity positive
+      std::set<std::string> theirs, mine;
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+      for (const auto& side : s_.claim.sides) names_of(side, mine);
+      bool alike = true;
+      for (const auto& n : mine)
+        alike = alike && (theirs.count(n) || fn.count(n) || n == var ||
+                          std::find(constants.begin(), constants.end(), n) != constants.end());
+      std::vector<std::string> others(used.begin() + 1, used.end());
+      StepResult pos = attempt_positive(others, &solved);
+      if (alike && usable(pos) && pos.verdict.kind == VerdictKind::Refuted) {
+        refuted = pos;
+        refuted_rows = used;
+        refuted_method = what + ": it fails, whatever " + join(constants) + " is";
+      }
+    }
+  }
+  if (refuted) {
+    refuted->verdict.method = refuted_method + ": " + refuted->verdict.method;
+    refuted->found_line.clear();
+    return found(*refuted, "integrate", refuted_rows);
+  }
+  return std::nullopt;
+}
+
 }  // namespace dc::document_detail

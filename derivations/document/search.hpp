@@ -92,6 +92,16 @@ class Search {
   // nullopt when no name needs lifting.
   std::optional<StepResult> attempt_lifted(const std::vector<std::string>& refs);
 
+  // `v = -u_e\ln(m_r/m_0) - g t` "integrated" from `m_r\frac{dv}{dt} = -u_e\frac{dm_r}{dt} - m_r g`,
+  // `x = A\cos(\omega_0 t + \phi)` "the general solution" of `\ddot x + \omega_0^2 x = 0`: the
+  // row's value of its subject, with the names the equation makes functions of its variable
+  // read so, put into the equation leaves an identity, and the names the row introduces (m_0;
+  // A, phi) are its constants of integration. Only when the text says so ("integrat",
+  // "solution", "solving"). When it leaves no identity whatever the constants (and every other
+  // name of the row is one of the equation's, and a counterexample holds at positive values):
+  // refuted.
+  std::optional<StepResult> by_integration();
+
   // The names of the claim that no earlier step mentions.
   bool introduces_names();
   std::vector<std::string> new_names_of(const Step& s) const;

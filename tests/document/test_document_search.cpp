@@ -215,3 +215,25 @@ TEST_CASE("document search: a law with plain names read at each instant beside t
   CHECK(at(start, 3).verdict == "premise");
   CHECK(at(start, 7).verdict != "proved");
 }
+
+TEST_CASE("document search: a solution of an earlier rate equation, its new names the constants of integration") {
+  const std::string head = "$$m \\frac{dv}{dt} = -u \\frac{dm}{dt} - m g$$\n"          // 1
+                           "\n"
+                           "which is integrated (taking $v = 0$ at $t = 0$) to find\n"
+                           "\n";
+  CHECK(at(check(head + "$$v = -u \\ln\\left(\\frac{m}{m_0}\\right) - g t$$\n"), 5).verdict == "proved");
+  // no constant makes the wrong sign a solution
+  CHECK(at(check(head + "$$v = u \\ln\\left(\\frac{m}{m_0}\\right) - g t$$\n"), 5).verdict == "refuted");
+  // a second-order equation and its general solution
+  auto shm = check("$$\\frac{d^2x}{dt^2} + w^2 x = 0$$\n"                                 // 1
+                   "\n"
+                   "Its general solution is\n"
+                   "\n"
+                   "$$x = A \\cos(w t + \\phi)$$\n");                                      // 5
+  CHECK(at(shm, 5).verdict == "proved");
+  auto wrong = check("$$\\frac{d^2x}{dt^2} + w^2 x = 0$$\n\nIts general solution is\n\n$$x = A \\cos(w^2 t + \\phi)$$\n");
+  CHECK(at(wrong, 5).verdict != "proved");
+  // without words for integrating, the row is a given (a law with new names)
+  CHECK(at(check("$$m \\frac{dv}{dt} = -u \\frac{dm}{dt} - m g$$\n\nThen\n\n"
+                 "$$v = -u \\ln\\left(\\frac{m}{m_0}\\right) - g t$$\n"), 5).verdict == "premise");
+}
