@@ -2,15 +2,11 @@
 // each displayed row after its display (docs/documents.md). Checked as `check` does (workers,
 // budgets); OUT is written atomically and only when the document could be read. Exit code as
 // for `check`.
-#include <iostream>
-
 #include "apps/budget_flags.hpp"
+#include "apps/checked_files.hpp"
 #include "apps/commands.hpp"
-#include "derivations/exec/batch.hpp"
 #include "derivations/report/annotate.hpp"
 #include "derivations/report/report.hpp"
-#include "derivations/syntax/document.hpp"
-#include "derivations/syntax/io.hpp"
 
 namespace dc::cli {
 namespace {
@@ -22,19 +18,10 @@ struct AnnotateOptions {
 };
 
 int run(const AnnotateOptions& o) {
-  if (!is_document_path(o.input))
-    throw InputError({o.input, 0, 0}, "annotate reads a LaTeX (.tex) or Markdown (.md) document; for a .dc file "
-                                      "use `derivcheck latex --annotate`");
-  const bool to_stdout = o.output.empty() || o.output == "-";
-  if (!to_stdout) refuse_output_over_inputs(o.output, {o.input});
-  exec::RunOptions run = o.budget.resolve();
-  run.read_once = true;
-  std::vector<FileReport> reports = exec::check_files({o.input}, run);
-  if (reports.front().input_error) throw *reports.front().input_error;
-  const std::string text = annotate_document(*reports.front().derivation, reports.front().summary);
-  if (to_stdout) std::cout << text;
-  else write_file_atomic(o.output, text);
-  return totals(reports).exit_code(false);
+  return write_checked_document(o.input, o.output, o.budget,
+                                "annotate reads a LaTeX (.tex) or Markdown (.md) document; for a .dc file "
+                                "use `derivcheck latex --annotate`",
+                                annotate_document);
 }
 
 const CommandRegistrar registrar(
