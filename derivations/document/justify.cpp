@@ -49,6 +49,19 @@ void walk_nodes(const Node& n, const std::function<void(const Node&)>& f) {
   for (const auto& a : n.args) walk_nodes(a, f);
 }
 
+void replace_names(Node& n, const std::map<std::string, Node>& values, const std::string& keep,
+                   std::set<std::string>* replaced) {
+  if (n.kind == NodeKind::Symbol && n.text != keep)
+    if (auto it = values.find(n.text); it != values.end()) {
+      const SourcePos pos = n.pos;
+      if (replaced) replaced->insert(it->first);
+      n = it->second;
+      n.pos = pos;
+      return;
+    }
+  for (auto& a : n.args) replace_names(a, values, keep, replaced);
+}
+
 bool has_call(const Node& n, const std::set<std::string>& names) {
   if (n.kind == NodeKind::Call && names.count(n.text)) return true;
   for (const auto& a : n.args)
@@ -330,20 +343,7 @@ std::optional<StepResult> Search::attempt_lifted(const std::vector<std::string>&
     RuleArg a = label_arg(label);
     a.kind = RuleArg::Kind::Equation;
     a.equation.sides = {st->claim.sides.front(), st->claim.sides.back()};
-    for (auto& side : a.equation.sides) {
-      std::function<void(Node&)> put = [&](Node& x) {
-        if (x.kind == NodeKind::Symbol && x.text != subject)
-          if (auto it = lift.find(x.text); it != lift.end()) {
-            const SourcePos pos = x.pos;
-            x = it->second;
-            x.pos = pos;
-            lifted.insert(it->first);
-            return;
-          }
-        for (auto& arg : x.args) put(arg);
-      };
-      put(side);
-    }
+    for (auto& side : a.equation.sides) replace_names(side, lift, subject, &lifted);
     rule.refs.push_back(std::move(a));
   }
   if (lifted.empty()) return std::nullopt;

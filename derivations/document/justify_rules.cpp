@@ -252,17 +252,7 @@ std::optional<StepResult> Search::by_rates() {
     Relation rates;
     for (const auto& side : st->claim.sides) {
       Node copy = side;
-      std::function<void(Node&)> put = [&](Node& x) {
-        if (x.kind == NodeKind::Symbol)
-          if (auto it = rate.find(x.text); it != rate.end()) {
-            const SourcePos pos = x.pos;
-            x = it->second;
-            x.pos = pos;
-            return;
-          }
-        for (auto& a : x.args) put(a);
-      };
-      put(copy);
+      replace_names(copy, rate);
       rates.sides.push_back(std::move(copy));
     }
     RuleSpec rule;
@@ -332,17 +322,7 @@ std::optional<StepResult> Search::by_integration() {
     if (constants.empty()) continue;   // nothing in the row for the starting value to fix
     // the row's value of the subject, its other names read as the equation reads them
     Node value = s_.claim.sides[1];
-    std::function<void(Node&)> lift = [&](Node& x) {
-      if (x.kind == NodeKind::Symbol)
-        if (auto it = fn.find(x.text); it != fn.end()) {
-          const SourcePos pos = x.pos;
-          x = it->second;
-          x.pos = pos;
-          return;
-        }
-      for (auto& a : x.args) lift(a);
-    };
-    lift(value);
+    replace_names(value, fn);
     // the equation with the subject's function replaced by that value: an identity when the
     // row solves it
     const std::string id = fn.at(subject).text;

@@ -22,6 +22,10 @@ using rules::proved;
 // The names a node mentions (symbols and applied functions that are not built in).
 void names_of(const Node& n, std::set<std::string>& out);
 void walk_nodes(const Node& n, const std::function<void(const Node&)>& f);
+// Every plain name of n that `values` maps, except `keep`, replaced by its node (the position
+// of the name kept); the base names replaced are added to `replaced` when given.
+void replace_names(Node& n, const std::map<std::string, Node>& values, const std::string& keep = "",
+                   std::set<std::string>* replaced = nullptr);
 bool has_call(const Node& n, const std::set<std::string>& names);
 std::string join(const std::vector<std::string>& xs);
 // Words in the prose around a display that announce a regime or a law.
