@@ -556,7 +556,9 @@ void DocumentReader::build_steps() {
         links.push_back(std::move(l));
       }
       if (!sides.empty()) {
-        last_side = sides.back();
+        // `A &= B = 0 \\ &= C = 0`: the next row continues the quantity, not the 0 it was
+        // said to equal (B = C, not 0 = C)
+        last_side = sides.size() >= 3 && is_zero_literal(sides.back()) ? sides[sides.size() - 2] : sides.back();
         has_last_side = true;
       }
     }

@@ -173,3 +173,14 @@ TEST_CASE("document check: LaTeX align rows continue with &=, labels are cited")
   CHECK(at(rows, 8).verdict == "proved");
   CHECK(at(rows, 9).verdict == "refuted");
 }
+
+TEST_CASE("document reader: a row after `= 0` continues the quantity, not the 0") {
+  // `A &= B = 0 \\ &= C = 0`: the second row says B = C (and C = 0), not 0 = C
+  dc::Derivation d = dc::read_document(dc::SourceText{
+      "z.md", "$$\\begin{aligned} p &= m u - M w = 0 \\\\\n &= m a - M b = 0 \\end{aligned}$$\n"});
+  const dc::Step* first = nullptr;
+  for (const auto& s : d.steps)
+    if (s.pos.line == 2 && s.document_row && s.document_row->link == 1) first = &s;
+  REQUIRE(first);
+  CHECK(first->claim_text == "m*u - M*w = m*a - M*b");
+}

@@ -55,7 +55,7 @@ TEST_CASE("seed handout: checked as written, nothing refuted, v_e reported") {
                << ", undecided " << c.undecided);
   CHECK(c.refuted == 0);
   CHECK(c.rows >= 80);
-  CHECK(c.derived >= 40);   // measured 40 (docs/documents.md), as the issue asks
+  CHECK(c.derived >= 41);   // measured 41 (docs/documents.md); the issue asks for 40
   bool v_e = false;
   for (const auto& f : j["files"])
     if (f.contains("diagnostics"))
