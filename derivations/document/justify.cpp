@@ -134,6 +134,19 @@ StepResult Search::run() {
     }
     if (rates_only)
       if (auto r = by_rates()) return *r;
+    // new only as functions: dv_y/dt where the rows before speak of v_y (a derivative of a
+    // quantity an earlier row sets)
+    // (its variable may be new too: t)
+    bool functions_only = !nested_;
+    std::set<std::string> variables;
+    for (const auto& n : new_names_)
+      if (const std::size_t of = n.find("__of_"); of != std::string::npos) variables.insert(n.substr(of + 5));
+    for (const auto& n : new_names_) {
+      const std::size_t of = n.find("__of_");
+      functions_only = functions_only && (of != std::string::npos ? before.count(n.substr(0, of)) > 0 : variables.count(n) > 0);
+    }
+    if (functions_only)
+      if (auto r = by_differentiation()) return *r;
     // a solution of an earlier rate row whose new names are its constants of integration
     if (!nested_)
       if (auto r = by_integration()) return *r;

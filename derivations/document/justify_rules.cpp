@@ -383,4 +383,95 @@ std::optional<StepResult> Search::by_integration() {
   return std::nullopt;
 }
 
+std::optional<StepResult> Search::by_differentiation() {
+  static const char* const kWords[] = {"differentiat", "derivative"};
+  bool said = false;
+  for (const char* w : kWords) said = said || row_.hint.find(w) != std::string::npos;
+  if (!said || s_.claim.sides.size() != 2) return std::nullopt;
+  // the functions the row differentiates: base name -> its application (v_y -> v_y__of_t(t))
+  std::map<std::string, Node> fn;
+  std::string var;
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& n) {
+      if (n.kind != NodeKind::Call || n.text != "diff" || n.args.size() < 2 || n.args[0].kind != NodeKind::Call ||
+          n.args[0].args.size() != 1 || n.args[0].args[0].kind != NodeKind::Symbol)
+        return;
+      const std::string& id = n.args[0].text;
+      const std::size_t of = id.find("__of_");
+      if (of == std::string::npos || id.substr(of + 5) != n.args[0].args[0].text) return;
+      var = n.args[0].args[0].text;
+      fn[id.substr(0, of)] = n.args[0];
+    });
+  if (fn.empty()) return std::nullopt;
+  std::vector<std::string> sources = source_rows();
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
+        st.document_row->display + 2 >= row_.display && usable_ref(st.label) &&
+        std::find(sources.begin(), sources.end(), st.label) == sources.end())
+      sources.push_back(st.label);
+  }
+  std::optional<StepResult> refuted;
+  std::vector<std::string> refuted_rows;
+  std::string refuted_method;
+  for (const auto& label : sources) {
+    if (late()) break;
+    const Step* st = d_.find(label);
+    if (!st || st->claim.sides.size() < 2 || st->claim.sides[0].kind != NodeKind::Symbol) continue;
+    const auto f = fn.find(st->claim.sides[0].text);
+    if (f == fn.end()) continue;
+    // the row with the function replaced by that row's value (its other names as the row reads them)
+    Node value = st->claim.sides.back();
+    replace_names(value, fn);
+    Relation claim = s_.claim;
+    std::function<void(Node&)> put = [&](Node& x) {
+      if (x.kind == NodeKind::Call && x.text == f->second.text) {
+        const SourcePos pos = x.pos;
+        x = value;
+        x.pos = pos;
+        return;
+      }
+      for (auto& a : x.args) put(a);
+    };
+    for (auto& side : claim.sides) put(side);
+    RuleSpec rule;
+    rule.name = rule.written_name = "rewrite";
+    std::vector<std::string> used{label};
+    for (const auto& l : row_.locals) used.push_back(l);
+    for (const auto& l : row_.where) used.push_back(l);
+    for (const auto& l : used)
+      if (l != label) rule.refs.push_back(label_arg(l));
+    StepResult r = attempt_rule(std::move(rule), &claim);
+    const std::string what = "differentiating " + label + " (" + f->second.text + " replaced by its value there)";
+    if (usable(r) && r.verdict.holds()) {
+      r.verdict.method = what + ": " + r.verdict.method;
+      r.found_line.clear();   // a .dc rule line does not state it
+      return found(r, "differentiate", used);
+    }
+    if (usable(r) && r.verdict.kind == VerdictKind::Refuted && !refuted) {
+      std::set<std::string> theirs, mine;
+      for (const auto& side : st->claim.sides) names_of(side, theirs);
+      for (const auto& side : s_.claim.sides) names_of(side, mine);
+      bool alike = true;
+      for (const auto& n : mine) {
+        const std::size_t of = n.find("__of_");
+        alike = alike && (theirs.count(n) || n == var || (of != std::string::npos && fn.count(n.substr(0, of))));
+      }
+      std::vector<std::string> others(used.begin() + 1, used.end());
+      StepResult pos = alike ? attempt_positive(others, &claim) : StepResult{};
+      if (alike && usable(pos) && pos.verdict.kind == VerdictKind::Refuted) {
+        refuted = pos;
+        refuted_rows = used;
+        refuted_method = what + ": the sides differ";
+      }
+    }
+  }
+  if (refuted) {
+    refuted->verdict.method = refuted_method + ": " + refuted->verdict.method;
+    refuted->found_line.clear();
+    return found(*refuted, "differentiate", refuted_rows);
+  }
+  return std::nullopt;
+}
+
 }  // namespace dc::document_detail

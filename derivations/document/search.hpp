@@ -106,6 +106,13 @@ class Search {
   // refuted.
   std::optional<StepResult> by_integration();
 
+  // `\frac{dv_y}{dt} = -g` "differentiating" the earlier `v_y = v_0\sin\alpha - g t`: the row's
+  // derivatives of a name an earlier row sets (its subject, as a function of the derivative's
+  // variable) replaced by the derivative of that row's value leave an identity. Only when the
+  // text says so ("differentiat", "derivative"). When they leave none (every other name of the
+  // row one of that row's, a counterexample at positive values): refuted.
+  std::optional<StepResult> by_differentiation();
+
   // The names of the claim that no earlier step mentions.
   bool introduces_names();
   std::vector<std::string> new_names_of(const Step& s) const;

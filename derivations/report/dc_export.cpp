@@ -108,6 +108,11 @@ std::string document_as_dc(const Derivation& d, const CheckSummary& summary) {
     } else if (holds) {
       rule = "by given";
       notes.push_back("derived in the document by " + r->found_rule + ", which a .dc rule line does not state here");
+    } else if (refuted) {
+      rule = "by given";
+      ++todo;
+      notes.push_back("TODO: REFUTED in the document by " + r->found_rule + " (" + r->verdict.method +
+                      "), which a .dc rule line does not state here");
     } else {
       rule = "by given";
       ++todo;

@@ -15,8 +15,8 @@ namespace dc {
 // its line (`L38_2` for the second relation of line 38, `I15_124` for an equation of the text
 // at line 15, column 124), with the tag of its row. A derived row gets the rule line that was
 // checked; a refuted row the rule it was refuted against (so checking the .dc file refutes it
-// too); a row with no justification found is written `by given` with a note that says so and
-// why (TODO: the author's rule). Rows the .dc language cannot state (≈, inequalities, rows
+// too); a row with no justification found, or refuted by a rule no .dc line states, is written
+// `by given` with a TODO note that says so and why. Rows the .dc language cannot state (≈, inequalities, rows
 // not read) are comments. Deterministic.
 std::string document_as_dc(const Derivation& d, const CheckSummary& summary);
 

@@ -237,3 +237,14 @@ TEST_CASE("document search: a solution of an earlier rate equation, its new name
   CHECK(at(check("$$m \\frac{dv}{dt} = -u \\frac{dm}{dt} - m g$$\n\nThen\n\n"
                  "$$v = -u \\ln\\left(\\frac{m}{m_0}\\right) - g t$$\n"), 5).verdict == "premise");
 }
+
+TEST_CASE("document search: differentiating a row that sets a quantity, and a slip in it") {
+  const std::string head = "$$v = u \\sin a - g t$$\n"          // 1
+                           "\n"
+                           "Differentiating once more, the acceleration is\n"
+                           "\n";
+  CHECK(at(check(head + "$$\\frac{dv}{dt} = -g$$\n"), 5).verdict == "proved");
+  CHECK(at(check(head + "$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "refuted");
+  // without the words the row is a new law about v(t) (a given)
+  CHECK(at(check("$$v = u \\sin a - g t$$\n\nThen\n\n$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "premise");
+}
