@@ -161,11 +161,27 @@ void DocumentReader::authors_rules() {
       if (r.display == k && offset_of(r.row->origin) < at) row = &r;
     if (!row) continue;
     const std::string rule = word + " " + as_dc_rule(c, c.text.substr(e));
+    std::vector<std::size_t> links;
     for (std::size_t i = 0; i < d_.steps.size(); ++i) {
-      Step& s = d_.steps[i];
-      if (!s.document_row || s.document_row->relation == "inline" || s.pos.line != row->row->origin.line ||
-          s.pos.col != row->row->origin.col)
+      const Step& s = d_.steps[i];
+      if (s.document_row && s.document_row->relation != "inline" && s.pos.line == row->row->origin.line &&
+          s.pos.col == row->row->origin.col)
+        links.push_back(i);
+    }
+    // a comment that only looks like a rule (`% by definition of the momentum`) is the author's
+    // prose: a warning, unless it was addressed to the checker (`% derivcheck: by …`)
+    if (!c.addressed && !links.empty()) {
+      try {
+        (void)read_rule_line(d_, links.front(), rule, c.origin);
+      } catch (const InputError& err) {
+        d_.diagnostics.push_back(InputError::warning(c.origin, "a comment 'by " + word + " …' after a row is not read as its rule: " +
+                                                                   err.message() + " (write `derivcheck: by …` to make it one)",
+                                                     static_cast<int>(e), doc_.source.line(c.origin.line)));
         continue;
+      }
+    }
+    for (std::size_t i : links) {
+      Step& s = d_.steps[i];
       s.rule = read_rule_line(d_, i, rule, c.origin);
       s.rule.written_name = word;
       s.document_row->authors_rule = true;

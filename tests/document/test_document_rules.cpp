@@ -64,13 +64,19 @@ TEST_CASE("author's rule: Markdown comment with tags, and positioned errors") {
   auto rows = check("d.md", md);
   CHECK(at(rows, 5).verdict == "proved");
   CHECK(at(rows, 5).rule == "substitute");
-  // a reference that names no row, and an unknown rule after `derivcheck:`, are input errors
-  // at the comment's line
+  // addressed to the checker, a reference that names no row and an unknown rule are input
+  // errors at the comment's line; the same words in a plain comment are the author's prose
+  // (a warning), as is `by definition of …`
   try {
-    dc::read_document(dc::SourceText{"e.md", "$$F = m a$$\n\n$$F = m g$$\n<!-- by substitute (7) into (1) -->\n"});
+    dc::read_document(dc::SourceText{"e.md", "$$F = m a$$\n\n$$F = m g$$\n<!-- derivcheck: by substitute (7) into (1) -->\n"});
     FAIL("no error");
   } catch (const dc::InputError& e) {
     CHECK(e.pos().line == 4);
+  }
+  for (const char* prose : {"<!-- by substitute (7) into (1) -->", "<!-- by definition of the force -->"}) {
+    const dc::Derivation d =
+        dc::read_document(dc::SourceText{"g.md", std::string("$$F = m a$$\n\n$$F = m g$$\n") + prose + "\n"});
+    CHECK(d.diagnostics.size() == 1);
   }
   CHECK_THROWS_AS(dc::read_document(dc::SourceText{"f.md", "$$F = m a$$\n<!-- derivcheck: by magic -->\n"}),
                   dc::InputError);
