@@ -49,6 +49,25 @@ void walk_nodes(const Node& n, const std::function<void(const Node&)>& f) {
   for (const auto& a : n.args) walk_nodes(a, f);
 }
 
+Derivation positive_reading(const Derivation& d, const std::set<std::string>& except) {
+  Derivation out = d;
+  for (const auto& info : d.symbols.all())
+    if (!info.is_function && info.domain.unrestricted() && !except.count(info.name))
+      out.symbols.narrow_domain(info.name, Domain::positive());
+  out.index();
+  return out;
+}
+
+void replace_calls(Node& n, const std::string& id, const Node& value) {
+  if (n.kind == NodeKind::Call && n.text == id) {
+    const SourcePos pos = n.pos;
+    n = value;
+    n.pos = pos;
+    return;
+  }
+  for (auto& a : n.args) replace_calls(a, id, value);
+}
+
 void replace_names(Node& n, const std::map<std::string, Node>& values, const std::string& keep,
                    std::set<std::string>* replaced) {
   if (n.kind == NodeKind::Symbol && n.text != keep)
@@ -381,7 +400,6 @@ StepResult Search::attempt(const std::vector<std::string>& refs) {
 // domain is positive (masses, lengths, speeds of the usual physical reading).
 StepResult Search::attempt_positive(const std::vector<std::string>& refs, const Relation* claim) {
   if (!positive_) {
-    positive_ = std::make_unique<Derivation>(d_);
     // (not a name that an equation of the text in force here, or for the rows of the two
     // displays before, sets to zero or below: `neglect D`, `$\theta = 0$`)
     std::set<std::string> conditions(row_.locals.begin(), row_.locals.end());
@@ -397,10 +415,7 @@ StepResult Search::attempt_positive(const std::vector<std::string>& refs, const 
         if ((v.kind == NodeKind::Number && (v.text == "0" || v.text == "0.0")) || v.kind == NodeKind::Neg)
           zero.insert(st->claim.sides[0].text);
       }
-    for (const auto& info : d_.symbols.all())
-      if (!info.is_function && info.domain.unrestricted() && !zero.count(info.name))
-        positive_->symbols.narrow_domain(info.name, Domain::positive());
-    positive_->index();
+    positive_ = std::make_unique<Derivation>(positive_reading(d_, zero));
   }
   RuleSpec rule;
   rule.name = rule.written_name = "rewrite";
@@ -640,11 +655,7 @@ StepResult justify_step(const Derivation& d, const Step& s, const ProveOptions& 
     if (r.verdict.kind == VerdictKind::Refuted) {
       // the document declares no signs: as for a found rule, a counterexample needs one with
       // every undeclared quantity positive (which is one of the unrestricted reading too)
-      Derivation positive = d;
-      for (const auto& info : d.symbols.all())
-        if (!info.is_function && info.domain.unrestricted()) positive.symbols.narrow_domain(info.name, Domain::positive());
-      positive.index();
-      StepResult pos = check_step(positive, s, opt);
+      StepResult pos = check_step(document_detail::positive_reading(d, {}), s, opt);
       if (pos.verdict.kind == VerdictKind::Refuted) {
         pos.step = r.step;
         r = pos;

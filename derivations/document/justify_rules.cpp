@@ -273,6 +273,21 @@ std::optional<StepResult> Search::by_rates() {
   return std::nullopt;
 }
 
+// The rows an equation of a solution or a derivative may come from: the usual sources, and
+// every row of the two displays before this one (the case of an equation may have ended in the
+// words between, "which is integrated"; it is used with the conditions it was written under).
+std::vector<std::string> Search::equation_rows() const {
+  std::vector<std::string> out = source_rows();
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
+        st.document_row->display + 2 >= row_.display && usable_ref(st.label) &&
+        std::find(out.begin(), out.end(), st.label) == out.end())
+      out.push_back(st.label);
+  }
+  return out;
+}
+
 std::optional<StepResult> Search::by_integration() {
   static const char* const kWords[] = {"integrat", "solution", "solving"};
   bool said = false;
@@ -282,17 +297,7 @@ std::optional<StepResult> Search::by_integration() {
   // the constants of integration: names no earlier row mentions, none of them a function
   for (const auto& n : new_names_)
     if (const SymbolInfo* info = d_.symbols.find(n); !info || info->is_function) return std::nullopt;
-  // the rows that may be the equation: the usual sources, and every row of the two displays
-  // before this one (the case of a rate row may have ended in the words between, "which is
-  // integrated"; it is used with the conditions it was written under)
-  std::vector<std::string> sources = source_rows();
-  for (const auto& st : d_.steps) {
-    if (&st == &s_) break;
-    if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
-        st.document_row->display + 2 >= row_.display && usable_ref(st.label) &&
-        std::find(sources.begin(), sources.end(), st.label) == sources.end())
-      sources.push_back(st.label);
-  }
+  const std::vector<std::string> sources = equation_rows();
   std::optional<StepResult> refuted;
   std::vector<std::string> refuted_rows;
   std::string refuted_method;
@@ -327,16 +332,7 @@ std::optional<StepResult> Search::by_integration() {
     // row solves it
     const std::string id = fn.at(subject).text;
     Relation solved = st->claim;
-    std::function<void(Node&)> put = [&](Node& x) {
-      if (x.kind == NodeKind::Call && x.text == id) {
-        const SourcePos pos = x.pos;
-        x = value;
-        x.pos = pos;
-        return;
-      }
-      for (auto& a : x.args) put(a);
-    };
-    for (auto& side : solved.sides) put(side);
+    for (auto& side : solved.sides) replace_calls(side, id, value);
     RuleSpec rule;
     rule.name = rule.written_name = "rewrite";
     std::vector<std::string> used{label};
@@ -403,14 +399,7 @@ std::optional<StepResult> Search::by_differentiation() {
       fn[id.substr(0, of)] = n.args[0];
     });
   if (fn.empty()) return std::nullopt;
-  std::vector<std::string> sources = source_rows();
-  for (const auto& st : d_.steps) {
-    if (&st == &s_) break;
-    if (st.document_row && st.document_row->relation != "inline" && st.document_row->display < row_.display &&
-        st.document_row->display + 2 >= row_.display && usable_ref(st.label) &&
-        std::find(sources.begin(), sources.end(), st.label) == sources.end())
-      sources.push_back(st.label);
-  }
+  const std::vector<std::string> sources = equation_rows();
   std::optional<StepResult> refuted;
   std::vector<std::string> refuted_rows;
   std::string refuted_method;
@@ -424,16 +413,7 @@ std::optional<StepResult> Search::by_differentiation() {
     Node value = st->claim.sides.back();
     replace_names(value, fn);
     Relation claim = s_.claim;
-    std::function<void(Node&)> put = [&](Node& x) {
-      if (x.kind == NodeKind::Call && x.text == f->second.text) {
-        const SourcePos pos = x.pos;
-        x = value;
-        x.pos = pos;
-        return;
-      }
-      for (auto& a : x.args) put(a);
-    };
-    for (auto& side : claim.sides) put(side);
+    for (auto& side : claim.sides) replace_calls(side, f->second.text, value);
     RuleSpec rule;
     rule.name = rule.written_name = "rewrite";
     std::vector<std::string> used{label};

@@ -26,6 +26,11 @@ void walk_nodes(const Node& n, const std::function<void(const Node&)>& f);
 // of the name kept); the base names replaced are added to `replaced` when given.
 void replace_names(Node& n, const std::map<std::string, Node>& values, const std::string& keep = "",
                    std::set<std::string>* replaced = nullptr);
+// d with every name it declares no domain for (except `except`) positive: the usual physical
+// reading, in which a counterexample of a document's row must also hold.
+Derivation positive_reading(const Derivation& d, const std::set<std::string>& except);
+// Every application of function `id` in n replaced by `value` (the position kept).
+void replace_calls(Node& n, const std::string& id, const Node& value);
 bool has_call(const Node& n, const std::set<std::string>& names);
 std::string join(const std::vector<std::string>& xs);
 // Words in the prose around a display that announce a regime or a law.
@@ -105,6 +110,7 @@ class Search {
   // name of the row is one of the equation's, and a counterexample holds at positive values):
   // refuted.
   std::optional<StepResult> by_integration();
+  std::vector<std::string> equation_rows() const;
 
   // `\frac{dv_y}{dt} = -g` "differentiating" the earlier `v_y = v_0\sin\alpha - g t`: the row's
   // derivatives of a name an earlier row sets (its subject, as a function of the derivative's
