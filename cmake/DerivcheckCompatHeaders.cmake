@@ -41,6 +41,10 @@ set(DERIVCHECK_COMPAT_HEADERS
   "derivations/core/printer.hpp" "derivations/symbolic/printer.hpp"
   "derivations/core/rules.hpp" "derivations/rules/check.hpp"
   "derivations/core/prove_detail.hpp" "derivations/symbolic/inspect.hpp,derivations/symbolic/printer.hpp,derivations/kernel/range.hpp,derivations/kernel/sample.hpp"
+  "derivations/rules/context.hpp" "derivations/steps/context.hpp"
+  "derivations/rules/elimination.hpp" "derivations/steps/elimination.hpp"
+  "derivations/rules/follows.hpp" "derivations/steps/follows.hpp"
+  "derivations/rules/counterexample.hpp" "derivations/steps/counterexample.hpp"
 )
 
 list(LENGTH DERIVCHECK_COMPAT_HEADERS _dc_n)

@@ -21,7 +21,7 @@ import tempfile
 def check(binary, path):
     out = subprocess.run([binary, 'check', path, '--json'], capture_output=True, text=True).stdout
     d = json.loads(out)
-    return {(r['line'], r['link']): r for f in d['files'] for r in f['steps']}
+    return {(r['line'], r['col'], r['link']): r for f in d['files'] for r in f['steps']}
 
 
 def mutate(seg):
@@ -43,8 +43,10 @@ def main():
                     if r['verdict'] == 'proved' and r.get('rule') != 'identity' and r['label'][0] == 'L')
     planted = refuted = 0
     with tempfile.TemporaryDirectory() as tmp:
-        for (line, link) in proved:
-            parts = re.split(r'(?<![<>\\])=', text[line - 1])
+        for (line, col, link) in proved:
+            # the row's own text: from its first math character to the end of the row
+            row = re.split(r'\\\\|\$\$|\\end\{', text[line - 1][col - 1:])[0]
+            parts = re.split(r'(?<![<>\\])=', row)
             if len(parts) < 2:
                 continue
             idx = len(parts) - 1 if link == 0 else min(link, len(parts) - 1)
@@ -54,13 +56,13 @@ def main():
                 continue
             parts[idx] = parts[idx].replace(core, changed, 1)
             lines = list(text)
-            lines[line - 1] = '='.join(parts)
+            lines[line - 1] = text[line - 1][:col - 1] + text[line - 1][col - 1:].replace(row, '='.join(parts), 1)
             path = os.path.join(tmp, os.path.basename(src))
             open(path, 'w').write('\n'.join(lines))
-            r = check(binary, path).get((line, link), {})
+            r = check(binary, path).get((line, col, link), {})
             planted += 1
             refuted += r.get('verdict') == 'refuted'
-            print('%d:%d  %-9s  %s -> %s  %s' % (line, link, r.get('verdict', 'missing'), core.strip()[:50],
+            print('%d:%d:%d  %-9s  %s -> %s  %s' % (line, col, link, r.get('verdict', 'missing'), core.strip()[:50],
                                                  changed.strip()[:50], r.get('reason', '')[:110]))
     print('refuted %d of %d planted slips' % (refuted, planted))
     return 0

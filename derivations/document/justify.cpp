@@ -23,6 +23,7 @@
 #include <cctype>
 
 #include "derivations/document/search.hpp"
+#include "derivations/steps/follows.hpp"
 #include "derivations/syntax/document.hpp"
 
 namespace dc {
@@ -184,9 +185,13 @@ StepResult Search::run() {
     // the rows with their plain names read at the instant, as the claim's functions
     if (!r.verdict.holds() && !late())
       if (auto lifted = attempt_lifted(refs); lifted && usable(*lifted) && lifted->verdict.holds()) r = *lifted;
-    if (r.verdict.holds()) {
+    // a proof on one component of the rows' solutions: a slip among them may be what pins
+    // (`v_1/v_0 = …` without its square root beside the two energy rows forces mu = 0)
+    const bool one_component = r.verdict.kind == VerdictKind::Undecided &&
+                               r.verdict.reason.find(rules::kOneComponent) != std::string::npos;
+    if (r.verdict.holds() || one_component) {
       std::vector<std::string> slips;
-      if (!rests_on_a_slip(refs, &slips)) return found(r, "rewrite", refs);
+      if (!rests_on_a_slip(refs, &slips) && r.verdict.holds()) return found(r, "rewrite", refs);
       // the same rows without the slip among them (a later row may follow from the right ones)
       std::vector<std::string> rest;
       for (const auto& l : refs)
@@ -195,7 +200,7 @@ StepResult Search::run() {
         StepResult w = attempt(rest);
         if (usable(w) && w.verdict.holds() && !rests_on_a_slip(rest)) return found(w, "rewrite", rest);
       }
-      if (voided_.empty() && !slips.empty())
+      if (voided_.empty() && !slips.empty() && r.verdict.holds())
         voided_ = "it follows from " + join(refs) + ", but " + join(slips) +
                   " among them is refuted, or left standing only by a doubt (a counterexample satisfies the rows "
                   "before it); a slip beside the row it garbles pins a quantity, and from that anything follows";

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "derivations/document/document.hpp"
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 
 namespace dc::document_detail {
 

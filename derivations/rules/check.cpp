@@ -8,7 +8,7 @@
 #include <functional>
 
 #include "derivations/decide/common_domain.hpp"
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/in_domain.hpp"
 

@@ -6,7 +6,7 @@
 // function of t in the claim: its value there is expr (names_through, context.hpp), so
 // `diff(y, t) = F0` holds and `0 = F0` is still refuted.
 #include "derivations/rules/dispatch.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 namespace dc::rules {
 

@@ -3,7 +3,7 @@
 // with GiNaC and asks prove_equal / prove_zero (through them the kernel) whether the author's
 // claim equals it; no rule decides equality with `ex == ex`.
 #pragma once
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 
 namespace dc::rules {
 

@@ -4,7 +4,7 @@
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/kernel/range.hpp"
 #include "derivations/kernel/sign.hpp"
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 #include "derivations/decide/integer.hpp"
 
 namespace dc::rules {

@@ -16,7 +16,7 @@
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/kernel/quadrature.hpp"
 #include "derivations/rules/dispatch.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 namespace dc::rules {
 

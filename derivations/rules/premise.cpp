@@ -3,7 +3,7 @@
 #include "derivations/rules/dispatch.hpp"
 
 #include "derivations/syntax/expr.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 #include "derivations/rules/in_domain.hpp"
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/symbolic/printer.hpp"

@@ -3,7 +3,7 @@
 // claim and to the references. Without references the claim must be an identity. An
 // expression step (no `=`) has nothing to compare; its side conditions are still checked.
 #include "derivations/rules/dispatch.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 namespace dc::rules {
 

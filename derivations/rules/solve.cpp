@@ -14,8 +14,8 @@
 
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
-#include "derivations/rules/elimination.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/elimination.hpp"
+#include "derivations/steps/follows.hpp"
 #include "derivations/rules/in_domain.hpp"
 #include "derivations/rules/solve.hpp"
 

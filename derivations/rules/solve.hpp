@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 
 namespace dc::rules {
 

@@ -21,8 +21,8 @@
 #include "derivations/kernel/range.hpp"
 #include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/ball.hpp"
-#include "derivations/rules/counterexample.hpp"
-#include "derivations/rules/elimination.hpp"
+#include "derivations/steps/counterexample.hpp"
+#include "derivations/steps/elimination.hpp"
 #include "derivations/rules/solve.hpp"
 
 namespace dc::rules {

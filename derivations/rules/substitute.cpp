@@ -6,7 +6,7 @@
 
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/rules/dispatch.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 namespace dc::rules {
 

@@ -626,3 +626,59 @@ TEST_CASE("rewrite with abstract functions: a reference's derivative does not pi
   }
   require_refuted(c, "wrong");
 }
+
+// A product that is zero, read as one of its factors, proves anything about that factor: the
+// eliminations cover only one component of the references' solutions.
+TEST_CASE("a zero product read as one factor proves nothing: u a = u b is not u = 0, nor is a pin hidden in three equations",
+          "[rules][soundness][elimination]") {
+  auto c = check("zero_product.dc", R"(title "zero product"
+symbol u, a, b : real [1]
+one: u*a = u*b
+    by given
+bad_u: u = 0
+    by rewrite one
+ok_cancel: a = b
+    by rewrite one
+)");
+  require_refuted(c, "bad_u");
+  CHECK(c.at("ok_cancel").verdict.holds());   // the author's cancellation, u != 0
+
+  // a and mu are constants here, so the derivative of L1 in t gives m_r'*(a + g) = 0; with it
+  // the eliminations land where u_e*mu = 0 and read it as u_e = 0, on which the false L4
+  // "follows" (it is L2 with the sign of u_e flipped)
+  auto r = check("rocket_pin.dc", R"(title "rocket pin"
+symbol t : real [1]
+symbol a, g, u_e, mu : real [1]
+function m_r(t) : real [1]
+function m(t) : real [1]
+function v(t) : real [1]
+L1: m_r(t)*a = u_e*mu - m_r(t)*g
+    by given
+L2: m_r(t)*diff(v(t), t) = -u_e*diff(m_r(t), t) - m_r(t)*g
+    by given
+L3: mu = diff(m(t), t)
+    by given
+bad_L4: diff(v(t), t) = u_e*(diff(m_r(t), t)/m_r(t)) - g
+    by rewrite L2, L1, L3
+ok_L5: diff(v(t), t) = -u_e*(diff(m_r(t), t)/m_r(t)) - g
+    by rewrite L2
+)");
+  require_not_accepted(r, "bad_L4");
+  CHECK(contains(r.at("bad_L4").verdict.reason, "one component"));
+  CHECK(r.at("ok_L5").verdict.holds());
+
+  // two givens that force m*g = 0 (F = m a beside F - m g = m a): a claim that rests on m = 0
+  auto p = check("thrust_pin.dc", R"(title "thrust pin"
+symbol F, m, a, g, k : real [1]
+def1: F = m*a
+    by given
+def2: F - m*g = m*a
+    by given
+bad_k: m*a = k + m*g
+    by rewrite def1, def2
+ok_zero: m*g = 0
+    by rewrite def1, def2
+)");
+  require_not_accepted(p, "bad_k");
+  CHECK(p.at("ok_zero").verdict.holds());   // what the givens say, as a claim of its own
+}

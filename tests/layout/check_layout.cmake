@@ -21,6 +21,7 @@ set(STAGES
   derivations/limit_engine  # Gruntz's algorithm and the numeric witness
   derivations/calculus      # limit entry, order terms, antiderivatives, definite integrals
   derivations/reader        # the .dc reader -> Derivation
+  derivations/steps         # what every rule works with: the step's context and result, elimination, follows
   derivations/rules         # one file per rule; check_step / check_derivation
   derivations/document      # the author's LaTeX/Markdown -> Derivation; the justification search
   derivations/report        # text, JSON, LaTeX

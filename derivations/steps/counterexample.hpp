@@ -1,12 +1,12 @@
-// Is a refutation found after elimination a counterexample to the step? (internal to
-// derivations/rules/) The point must satisfy the references once the eliminated quantities
+// Is a refutation found after elimination a counterexample to the step? (derivations/steps/,
+// shared by the rules) The point must satisfy the references once the eliminated quantities
 // are computed from it (docs/soundness.md, "Rules add their own obligations").
 #pragma once
 #include <string>
 #include <vector>
 
-#include "derivations/rules/context.hpp"
-#include "derivations/rules/elimination.hpp"
+#include "derivations/steps/context.hpp"
+#include "derivations/steps/elimination.hpp"
 
 namespace dc::rules {
 

@@ -1,4 +1,4 @@
-// Elimination (internal to derivations/rules/): the references give equations E_k = 0;
+// Elimination (derivations/steps/, shared by the rules): the references give equations E_k = 0;
 // variables that an equation determines linearly are eliminated one equation at a time
 // (Gaussian elimination over rational functions, with a preference for the unknowns the rule
 // names and for symbols of the claim). Eliminating x with E = c*x + r (c != 0 generically)
@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 
 namespace dc::rules {
 
@@ -28,6 +28,9 @@ struct Elimination {
   int equation = -1;            // index of the equation it was eliminated with
   std::string key;              // deterministic text of var
   std::vector<int> sources;     // every equation the value rests on (for messages)
+  bool factor_of_zero = false;  // read a product that is zero as one of its factors (c*x = 0 as x = 0)
+  ex product;                   // then the product, as it was when read
+  ex value_then;                // the value when eliminated, before later eliminations
 };
 
 struct Leftover {

@@ -1,4 +1,4 @@
-// "The claim follows from equations" (internal to derivations/rules/): the shared tool of the
+// "The claim follows from equations" (derivations/steps/, shared by the rules): the shared tool of the
 // rules. The equations are reduced (elimination.hpp; references that contradict each other
 // are an input error), both sides of the claim are reduced with the eliminations, and
 // prove_equal decides. A refutation stands only when its point satisfies the references
@@ -7,10 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "derivations/rules/context.hpp"
-#include "derivations/rules/elimination.hpp"
+#include "derivations/steps/context.hpp"
+#include "derivations/steps/elimination.hpp"
 
 namespace dc::rules {
+
+// Part of the reason of a proof that holds on one component of the references' solutions only
+// (follows.cpp): the document search retries such a set without a slip among its rows.
+inline constexpr const char* kOneComponent = "one component of their solutions";
 
 // Does a = b follow from the equations? When a refutation's point fails because of one
 // elimination (it puts F0 = y/t outside F0's domain, or gives sin(theta) a value theta does not

@@ -1,4 +1,4 @@
-// What every rule works with (internal to derivations/rules/): the step being checked, its
+// What every rule works with (derivations/steps/, shared by the rules): the step being checked, its
 // references read as equations, substitutions, verdict helpers and the error a rule throws when
 // the step cannot be checked as written.
 #pragma once
@@ -9,7 +9,8 @@
 
 #include <ginac/ginac.h>
 
-#include "derivations/rules/check.hpp"
+#include "derivations/decide/prove.hpp"
+#include "derivations/steps/step_result.hpp"
 
 namespace dc::rules {
 

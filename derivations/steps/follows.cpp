@@ -1,12 +1,12 @@
 // Does the claim follow from the references? (follows.hpp)
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 #include <algorithm>
 #include <functional>
 #include <set>
 
 #include "derivations/symbolic/functions.hpp"
-#include "derivations/rules/counterexample.hpp"
+#include "derivations/steps/counterexample.hpp"
 
 namespace dc::rules {
 
@@ -181,9 +181,55 @@ bool has_application_at(const ex& e, const ex& s) {
   return false;
 }
 
-Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred) {
-  if (eqs0.empty()) return prove_equal(a, b, c.d.symbols, c.opt);
-  std::vector<Eq> eqs = instantiate(c, eqs0, a - b);
+// Does the proof rest on one component of the references' solution set? The eliminations divide
+// by coefficients that are nonzero generically, but where the references' solution set has
+// several components (m_r*g = 0; or u_e*mu = 0 hidden in three equations) a division by a
+// quantity that vanishes on one of them keeps only the others, and there a quantity may be
+// forced to zero. Two signs of it, each with a description returned ("" when neither):
+//  - an elimination read a product that is zero as one of its factors (reads_one_factor);
+//  - a symbol's value is identically zero once every elimination is in, though nothing
+//    written as `x = number` (D = 0, e = 1, m_1/m_2 = 0) makes its own equation say so (u_e = 0
+//    from m_r*a = u_e*mu - m_r*g, its derivative in t and m_r*v' = -u_e*m_r' - m_r*g).
+// The claim x = 0 itself (a = 0 from m*a = F, F = 0) is the cancellation the author made: a
+// claim that is a multiple of x is exempt.
+static std::string pinned_product(StepContext& c, const Reduction& red, const ex& claim) {
+  const ex t = c.atoms(claim);
+  auto multiple_of = [&](const ex& x) {
+    try {
+      return t.has(x) && !GiNaC::normal(t / x).has(x);
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  auto zero = [](const ex& e) {
+    try {
+      return GiNaC::normal(e).is_zero();
+    } catch (const std::exception&) {
+      return false;
+    }
+  };
+  GiNaC::exmap written;   // x = 0, e = 1 as written: a number times x, and a number
+  for (const auto& el : red.eliminated)
+    if (!el.factor_of_zero && GiNaC::is_a<GiNaC::numeric>(el.coef_checked) &&
+        GiNaC::is_a<GiNaC::numeric>(el.value_then))
+      written[el.var] = el.value_then;
+  for (const auto& el : red.eliminated) {
+    if (multiple_of(el.var)) continue;
+    if (el.factor_of_zero) return c.text(c.atoms.restore(el.product)) + " = 0";
+    // (a symbol only: a derivative that the references make zero, E'(t) = 0 from Newton's
+    // law, is what they say, not a component)
+    if (written.count(el.var) || !GiNaC::is_a<GiNaC::symbol>(c.atoms.restore(el.var)) || !zero(el.value)) continue;
+    if (!zero(el.value_then.subs(written, GiNaC::subs_options::no_pattern)))
+      return c.text(c.atoms.restore(el.var)) + " = 0";
+  }
+  return "";
+}
+
+// follows() on the equations as given (instantiated: false) or with their instances at the
+// claim's points and their derivatives (true).
+static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0,
+                            const std::vector<ex>& preferred, bool instantiated, bool* pinned) {
+  std::vector<Eq> eqs = instantiated ? instantiate(c, eqs0, a - b) : eqs0;
   Bans bans;
   Reduction red;
   Verdict v;
@@ -232,6 +278,13 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
   }
   if (red.degenerate && v.holds())
     v = undecided(v.method, "every order of elimination divides by a coefficient that vanishes identically");
+  // The eliminations cover the solution set of the references only where every coefficient
+  // divided by is nonzero; a product read as one of its factors (m_r*g = 0 read as m_r = 0)
+  // covers one component of it, and from m_r = 0 anything about m_r follows.
+  if (v.holds())
+    if (std::string p = pinned_product(c, red, a - b); !p.empty() && (*pinned = true))
+      v = undecided(v.method, "the proof holds where the references give " + p + ", " + kOneComponent +
+                                  " (it divides by a quantity that is zero on another); not shown on the others");
   if (red.resource_limit && !v.holds()) {
     v = undecided(v.method,
                   "resource limit: an equation would expand beyond " + std::to_string(c.opt.max_terms) + " terms");
@@ -239,6 +292,20 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
   if (!red.eliminated.empty()) {
     std::string el = "eliminating " + eliminated_text(c, red) + " with the references";
     v.detail = v.detail.empty() ? el : v.detail + "; " + el;
+  }
+  return v;
+}
+
+Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred) {
+  if (eqs0.empty()) return prove_equal(a, b, c.d.symbols, c.opt);
+  bool pinned = false;
+  Verdict v = follows_from(c, a, b, eqs0, preferred, true, &pinned);
+  // the instances may be what pins (m_r = m_r(t) and its derivative in t give m_r' = 0): the
+  // equations as written may prove the claim without them
+  if (pinned) {
+    bool again = false;
+    Verdict w = follows_from(c, a, b, eqs0, preferred, false, &again);
+    if (w.holds() && !again) return w;
   }
   return v;
 }

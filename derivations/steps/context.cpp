@@ -1,5 +1,5 @@
 // The step context and the helpers every rule uses (context.hpp).
-#include "derivations/rules/context.hpp"
+#include "derivations/steps/context.hpp"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // Elimination with the references' equations (elimination.hpp).
-#include "derivations/rules/elimination.hpp"
+#include "derivations/steps/elimination.hpp"
 
 #include <algorithm>
 
@@ -82,9 +82,35 @@ struct Candidate {
   std::string key;   // deterministic text: breaks ties (GiNaC's traversal order varies by process)
   ex var, value, coef;
   bool is_function = false;
+  bool factor_of_zero = false;
 };
 
-// Every atom of `num` that it determines linearly, best first: the rule's unknowns, symbols
+// num with the product of quantities common to all its terms divided out (u_e*m' + u_e*m_r'
+// becomes m' + m_r'): the cancellation an author makes, read before any elimination could
+// read the equation as u_e = 0 (a division by u_e, as eliminating with coefficient u_e would be).
+// A single term (m*a = 0) is left whole: which factor is zero is the question.
+ex without_common_factor(const ex& num) {
+  if (!GiNaC::is_a<GiNaC::add>(num)) return num;
+  try {
+    ex g = num.op(0);
+    for (std::size_t i = 1; i < num.nops() && !GiNaC::is_a<GiNaC::numeric>(g); ++i) g = GiNaC::gcd(g, num.op(i));
+    if (GiNaC::is_a<GiNaC::numeric>(g)) return num;
+    ex q;
+    if (GiNaC::divide(num, g, q)) return q.expand();
+  } catch (const std::exception&) {
+  }
+  return num;
+}
+
+// Does solving num = c*x + r = 0 for x read a product as one of its factors? With r = 0 and c
+// not a number it sets x = 0 (u*(a - b) = 0 read as u = 0, m_r*g = 0 as m_r = 0). (A factor
+// common to c and r is cancelled before: without_common_factor.)
+bool reads_one_factor(const ex& coef, const ex& value) {
+  return value.is_zero() && !GiNaC::is_a<GiNaC::numeric>(coef);
+}
+
+// Every atom of `num` that it determines linearly, best first (a factor of a product that is
+// zero last): the rule's unknowns, symbols
 // before applications such as sin(theta), atoms of the claim, the symbol written alone on the
 // reference's left, real-domain symbols, numeric coefficients, then declaration order and text.
 std::vector<Candidate> candidates(StepContext& c, const ex& num, const ex& hint, const ex& target,
@@ -98,6 +124,11 @@ std::vector<Candidate> candidates(StepContext& c, const ex& num, const ex& hint,
     Candidate k;
     if (!linear_in(num, a, k.coef, k.value)) return;
     long score = 0;
+    // a product read as one of its factors comes last: u*(a - b) = 0 is a = b far more often
+    // than u = 0, and a factor another row needs nonzero (m_r*g = 0) is a pin from which
+    // anything about it follows
+    k.factor_of_zero = reads_one_factor(k.coef, k.value);
+    if (k.factor_of_zero) score -= 10000;
     if (pref) score += 1000;
     if (!is_function) score += 500;
     if (target.has(a)) score += 100;
@@ -146,6 +177,12 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
       std::vector<int> sources{idx};
       std::vector<ex> used;
       ex e = c.atoms(eqs[idx].e);
+      // the author's own cancellation, before an earlier elimination hides it (u_e*m' = -u_e*m_r'
+      // after u_e = m_r*(a + g)/mu is a product of three factors)
+      if (estimate_expanded_terms(e) <= static_cast<double>(c.opt.max_terms)) try {
+          e = without_common_factor(GiNaC::numer(GiNaC::normal(e)).expand());
+        } catch (const std::exception&) {
+        }
       for (const auto& el : red.eliminated) {
         if (!e.has(el.var)) continue;
         e = e.subs(el.var == el.value, GiNaC::subs_options::no_pattern);
@@ -167,6 +204,7 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
         ++red.vanished;
         continue;
       }
+      num = without_common_factor(num);
       const Candidate* pick = nullptr;
       std::vector<Candidate> cands = candidates(c, num, c.atoms(eqs[idx].hint), t, preferred, only_preferred);
       // The earlier eliminations and the target with the pick put in. A pick that makes one of
@@ -198,7 +236,7 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
       }
       red.eliminated = std::move(updated);
       red.eliminated.push_back({pick->var, pick->value, pick->coef, pick->coef, pick->is_function, idx, pick->key,
-                                sources});
+                                sources, pick->factor_of_zero, pick->coef * (pick->var - pick->value), pick->value});
       t = t_updated;
     }
     pending = std::move(retry);

@@ -1,12 +1,12 @@
 // Checking a counterexample against the references (counterexample.hpp).
-#include "derivations/rules/counterexample.hpp"
+#include "derivations/steps/counterexample.hpp"
 
 #include <algorithm>
 
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/kernel/sample.hpp"
 #include "derivations/kernel/probe.hpp"
-#include "derivations/rules/follows.hpp"
+#include "derivations/steps/follows.hpp"
 
 namespace dc::rules {
 
