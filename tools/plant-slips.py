@@ -8,7 +8,7 @@ that relation in the row's text is changed once, by the first of: `+` -> `-`, a 
 `3`, `-` -> `+`, `m_1` -> `m_2`; the changed document is checked again, and the verdict at that
 row and link is printed. A mutation can leave the relation true (the limit of 2 m_1 v_1 /
 (m_1 - m_2) is still 0); such rows show as proved. Prints one line per planted slip and the
-count refuted. docs/documents.md has the figures for the seed handout.
+count refuted at their link and at their row (any of its links). docs/documents.md has the figures for the seed handout.
 """
 import json
 import os
@@ -41,7 +41,7 @@ def main():
     base = check(binary, src)
     proved = sorted(k for k, r in base.items()
                     if r['verdict'] == 'proved' and r.get('rule') != 'identity' and r['label'][0] == 'L')
-    planted = refuted = 0
+    planted = refuted = refuted_row = 0
     with tempfile.TemporaryDirectory() as tmp:
         for (line, col, link) in proved:
             # the row's own text: from its first math character to the end of the row
@@ -59,12 +59,18 @@ def main():
             lines[line - 1] = text[line - 1][:col - 1] + text[line - 1][col - 1:].replace(row, '='.join(parts), 1)
             path = os.path.join(tmp, os.path.basename(src))
             open(path, 'w').write('\n'.join(lines))
-            r = check(binary, path).get((line, col, link), {})
+            got = check(binary, path)
+            r = got.get((line, col, link), {})
+            # the row is refuted when one of its links is: a slip in the middle side of
+            # `v'_1 = A = B` makes A = B false as well as v'_1 = A
+            row_refuted = any(v.get('verdict') == 'refuted' for (l, c, _), v in got.items() if (l, c) == (line, col))
             planted += 1
             refuted += r.get('verdict') == 'refuted'
-            print('%d:%d:%d  %-9s  %s -> %s  %s' % (line, col, link, r.get('verdict', 'missing'), core.strip()[:50],
-                                                 changed.strip()[:50], r.get('reason', '')[:110]))
-    print('refuted %d of %d planted slips' % (refuted, planted))
+            refuted_row += row_refuted
+            print('%d:%d:%d  %-9s %-4s  %s -> %s  %s' % (line, col, link, r.get('verdict', 'missing'),
+                                                      'row' if row_refuted else '', core.strip()[:50],
+                                                      changed.strip()[:50], r.get('reason', '')[:110]))
+    print('refuted %d of %d planted slips at their link, %d at their row' % (refuted, planted, refuted_row))
     return 0
 
 

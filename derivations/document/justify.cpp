@@ -258,6 +258,19 @@ StepResult Search::run() {
       r = w;
       refs = wider;
     }
+    // a given of this display among the rows may not be needed by the counterexample at all
+    // (link 2 of `E = ½mv² - GMm/r = -GMm/r`, against `E = …` and `v² = GM/r`): without it,
+    // a counterexample to the rest is no "one more law of the system"
+    if (const auto own = own_display_givens(refs); !own.empty() && !late()) {
+      std::vector<std::string> rest;
+      for (const auto& l : refs)
+        if (std::find(own.begin(), own.end(), l) == own.end()) rest.push_back(l);
+      StepResult w = attempt(rest);
+      if (usable(w) && w.verdict.kind == VerdictKind::Refuted) {
+        r = w;
+        refs = rest;
+      }
+    }
     std::string doubt = reading_in_doubt(r, refs);
     if (doubt.empty() && late())
       doubt = "the search used up its tries before it could check that the reading of the row is not in doubt";

@@ -246,6 +246,17 @@ bool Search::side_condition_only(const Verdict& v) {
   return v.kind == VerdictKind::Refuted && v.method.find("+ side condition") != std::string::npos;
 }
 
+// The rows among refs that are givens of this row's own display (they introduced names).
+std::vector<std::string> Search::own_display_givens(const std::vector<std::string>& refs) const {
+  std::vector<std::string> out;
+  for (const auto& label : refs) {
+    const Step* st = d_.find(label);
+    if (!st || !st->document_row || st->document_row->relation == "inline") continue;
+    if (st->document_row->display == row_.display && !new_names_of(*st).empty()) out.push_back(label);
+  }
+  return out;
+}
+
 // Why a counterexample is no evidence against the author here ("" when it is).
 std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const {
   if (side_condition_only(r.verdict))
@@ -264,13 +275,9 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
   // names its quantities and then states a law (`\Delta p = p_p + p_c = m_p v_p - m_c v_c = 0`):
   // against rows before it in the same display that introduced names (givens), the row may be
   // one more equation of the system rather than a consequence of it
-  for (const auto& label : refs) {
-    const Step* st = d_.find(label);
-    if (!st || !st->document_row || st->document_row->relation == "inline") continue;
-    if (st->document_row->display == row_.display && !new_names_of(*st).empty())
-      return "the counterexample rests on " + label + ", a given of this same display, so the row may be one "
-             "more law of the system it lists";
-  }
+  if (const auto own = own_display_givens(refs); !own.empty())
+    return "the counterexample rests on " + own.front() + ", a given of this same display, so the row may be one "
+           "more law of the system it lists";
   // `… = m_p v_p - m_c v_c = 0` after links that only name the sum: the counterexample chose
   // every name of the row freely, so the rows relate none of them, and the row adds a
   // relation among them (a conservation law) as likely as a slip
