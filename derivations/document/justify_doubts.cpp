@@ -326,6 +326,31 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
     if (has_call(side, calculus))
       return "the row takes a limit, a derivative or an integral, whose reading (which names vary, the "
              "regime) is not certain";
+  // `\theta(x) = \theta_b e^{-mx}` against `\theta'' = m^2\theta` and `\theta(0) = \theta_b`: the
+  // rows give a differential equation for a function the row applies, and which of its
+  // solutions the row takes is fixed by conditions the text may state only in words (the
+  // excess dies away far from the wall)
+  {
+    std::set<std::string> applied;
+    for (const auto& side : s_.claim.sides)
+      walk_nodes(side, [&](const Node& x) {
+        if (x.kind == NodeKind::Call && x.text.find("__of_") != std::string::npos) applied.insert(x.text);
+      });
+    for (const auto& label : refs) {
+      const Step* st = d_.find(label);
+      if (!st) continue;
+      std::string differentiated;
+      for (const auto& side : st->claim.sides)
+        walk_nodes(side, [&](const Node& x) {
+          if (x.kind == NodeKind::Call && x.text == "diff" && !x.args.empty() && x.args[0].kind == NodeKind::Call &&
+              applied.count(x.args[0].text))
+            differentiated = x.args[0].text;
+        });
+      if (!differentiated.empty())
+        return label + " is a differential equation for " + differentiated.substr(0, differentiated.find("__of_")) +
+               ", and which of its solutions the row takes is fixed by conditions the text may state in words";
+    }
+  }
   if (prose_names_a_regime(row_.hint))
     return "the text before the display names a regime or a law the search does not read";
   return "";

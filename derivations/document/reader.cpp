@@ -361,6 +361,12 @@ void DocumentReader::mark_functions_and_vectors() {
   }
   read_differentials(functions);
   for (auto& r : rows_) {
+    for (auto& ch : r.tex.chains)
+      for (auto& side : ch.sides)
+        if (std::string why = read_values_at(side, functions[r.display]); !why.empty() && r.not_read.empty()) {
+          r.not_read = why;
+          r.not_read_pos = r.row->origin;
+        }
     auto fit = functions.find(r.display);
     for (auto& ch : r.tex.chains)
       for (auto& side : ch.sides) {

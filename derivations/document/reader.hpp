@@ -90,6 +90,11 @@ class DocumentReader {
   // Every plain use of a function name becomes its application at the variable.
   void to_functions(Node& n, const std::map<std::string, std::string>& names);
 
+  // `v(0)`, `x(t)` as the parser reads them (value_at): the application of the function that
+  // `here` (the display's names differentiated on their own), another row of the document or
+  // the written variable (`x(t)`) makes of the name. "" when every one is read, else why not.
+  std::string read_values_at(Node& n, const std::map<std::string, std::string>& here);
+
   // An inline equation of the prose (`$e = 1$`) is a given for the display that follows it.
   void inline_givens();
 

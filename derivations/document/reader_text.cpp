@@ -10,6 +10,32 @@
 namespace dc::document_detail {
 
 // An inline equation of the prose (`$e = 1$`) is a given for the display that follows it.
+std::string DocumentReader::read_values_at(Node& n, const std::map<std::string, std::string>& here) {
+  std::string why;
+  walk(n, [&](Node& x) {
+    if (x.kind != NodeKind::Call || x.text != "value_at" || x.args.size() != 2 ||
+        x.args[0].kind != NodeKind::Symbol)
+      return;
+    const std::string name = x.args[0].text;
+    std::string var;
+    if (auto it = here.find(name); it != here.end()) var = it->second;
+    for (const auto& [id, v] : function_vars_)
+      if (var.empty() && id == function_id(name, v)) var = v;
+    if (var.empty() && x.args[1].kind == NodeKind::Symbol) var = x.args[1].text;   // x(t): the row says so
+    if (var.empty() || var == name) {
+      if (why.empty())
+        why = name + "(" + to_text(x.args[1]) + ") is the value of " + name + " at " + to_text(x.args[1]) +
+              ", but no row makes " + name + " a function of a variable (dv/dt, v(t))";
+      return;
+    }
+    Node arg = x.args[1];
+    x.text = function_id(name, var);
+    x.args = {arg};
+    function_vars_[x.text] = var;
+  });
+  return why;
+}
+
 void DocumentReader::inline_givens() {
   // `taking $v = 0$ at $t = 0$`: a value at a point (an initial condition), not a condition
   // of the display: neither equation is read as a given
@@ -60,6 +86,11 @@ void DocumentReader::inline_givens() {
                 x.args[0].kind == NodeKind::Symbol && x.args[1].kind == NodeKind::Symbol)
               functions[x.args[0].text] = x.args[1].text;
           });
+      std::string unread;
+      for (auto& ch : row.chains)
+        for (auto& side : ch.sides)
+          if (std::string why = read_values_at(side, functions); unread.empty()) unread = why;
+      if (!unread.empty()) continue;   // `$v(0) = 0$` with v a function of nothing: symbols only
       for (auto& ch : row.chains)
         for (auto& side : ch.sides) to_functions(side, functions);
       for (const auto& [name, var] : functions) function_vars_[function_id(name, var)] = var;

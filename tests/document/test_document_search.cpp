@@ -248,3 +248,31 @@ TEST_CASE("document search: differentiating a row that sets a quantity, and a sl
   // without the words the row is a new law about v(t) (a given)
   CHECK(at(check("$$v = u \\sin a - g t$$\n\nThen\n\n$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "premise");
 }
+
+// `v(0)` is the value of v at 0, not the product v*0 (which once made `$v(0) = v_0$` pin
+// v_0 = 0 and refuted a true `v(0) = v_0`); `x(0)` of a quantity no row makes a function of
+// anything is not read.
+TEST_CASE("document search: v(0) and v(t) are values of the function v, never products") {
+  const std::string text = "$$v(t) = v_0 e^{-k t}$$\n"   // 1
+                           "\n"
+                           "so at the start\n"
+                           "\n"
+                           "$$v(0) = v_0$$\n"            // 5
+                           "\n"
+                           "and a slip\n"
+                           "\n"
+                           "$$v(0) = 2 v_0$$\n"          // 9
+                           "\n"
+                           "and a value of nothing\n"
+                           "\n"
+                           "$$x(0) = 3$$\n";             // 13
+  const auto rows = check(text);
+  CHECK(at(rows, 1).verdict == "premise");
+  CHECK(at(rows, 5).verdict == "proved");
+  CHECK(at(rows, 9).verdict == "refuted");
+  CHECK(at(rows, 13).verdict == "undecided");
+  CHECK(at(rows, 13).reason.find("no row makes x a function") != std::string::npos);
+  // the equation of the text `$v(0) = v_0$` is a value of v, not v*0 = v_0 (which pinned v_0 = 0)
+  const auto pinned = check("With $v(0) = v_0$ the law\n\n$$\\frac{dv}{dt} = -k v$$\n\nholds, and\n\n$$v_0 = 0$$\n");
+  CHECK(at(pinned, 7).verdict != "proved");
+}

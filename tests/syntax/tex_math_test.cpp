@@ -140,8 +140,10 @@ TEST_CASE("tex: functions and calls", "[tex]") {
   CHECK(expr("\\sin \\omega t") == "sin(omega*t)");
   CHECK(expr("\\operatorname{sgn}(x)") == "sgn(x)");
   CHECK(expr("\\log_{10} x + \\log_2(y)") == "log(x)/log(10) + log(y)/log(2)");
-  // f(x) is a call only for a declared function
-  CHECK(expr("f(x)") == "f*(x)");
+  // f(x) is a call of a declared function; of an undeclared name, its value at x (the
+  // document reader decides what function that is), and f (x) with a space a product
+  CHECK(expr("f(x)") == "value_at(f, x)");
+  CHECK(expr("f (x)") == "f*(x)");
   TexContext ctx;
   ctx.functions = {"f", "v"};
   CHECK(expr("f(x) + v(t)", ctx) == "f(x) + v(t)");
@@ -242,17 +244,18 @@ TEST_CASE("tex: notation from public lecture notes", "[tex]") {
   CHECK(expr("d(mv)/dt") == "diff(m*v, t)");
   CHECK(expr("\\mathrm{d}x/\\mathrm{d}t") == "diff(x, t)");
   // \cdot before the differential, \textbf vectors
-  CHECK(expr("\\int_{x_0}^{x} F(x)\\cdot dx") == "integral(F*(x), x, x_0, x)");
+  CHECK(expr("\\int_{x_0}^{x} F(x)\\cdot dx") == "integral(value_at(F, x), x, x_0, x)");
   TexRow w = parse_tex_row("W = \\int_{t_1}^{t_2} \\frac{d\\vec{p}}{dt} \\cdot \\vec{v}\\, dt", kOrigin, {});
   CHECK(show(w) == "W = integral(diff(p, t)*v, t, t_1, t_2)");
   CHECK(w.vector_names == std::set<std::string>{"p", "v"});
   CHECK(parse_tex_row("\\textbf{F} = m \\textbf{a}", kOrigin, {}).vector_names.count("F"));
-  // v(t) of an undeclared v is a product, and the reading says so
+  // v(t), v(0), x(t_1) of an undeclared v: its value there (the document reader makes v a
+  // function of the variable, or does not read the row), never the product v*t that made
+  // `$v(0) = v_0$` pin v_0 = 0; a compound or spaced argument is still a product
   TexRow v = parse_tex_row("\\Delta x = \\int_{t_0}^{t_1} v(t)\\, dt", kOrigin, {});
-  CHECK(show(v) == "Delta_x = integral(v*(t), t, t_0, t_1)");
-  REQUIRE(v.readings.size() == 1);
-  CHECK(v.readings[0].message == "v(t) read as the product v*(t); declare v a function if it is one");
-  CHECK(v.readings[0].pos.col == 30);   // the (
+  CHECK(show(v) == "Delta_x = integral(value_at(v, t), t, t_0, t_1)");
+  CHECK(expr("v(0) + x_1(t_{1/2}) + u(-1)") == "value_at(v, 0) + value_at(x_1, t_1over2) + value_at(u, -1)");
+  CHECK(expr("m(v_1 - v_2) + a (b)") == "m*(v_1 - v_2) + a*(b)");
   // \Sigma F for a net force is a sum without bounds
   CHECK(error_of("\\Sigma F = m a").message() == "\\Sigma 'F' (a sum written with \\Sigma) is not read yet");
   CHECK(expr("\\Sigma_0 + \\Sigma") == "Sigma_0 + Sigma");

@@ -277,6 +277,10 @@ std::string Parser::subscript_text(std::size_t b, std::size_t e) const {
       s += "star";
       continue;
     }
+    if (t.is('/')) {   // t_{1/2}, the half-life: one name
+      s += "over";
+      continue;
+    }
     if (t.is(' ') || t.is('-') || t.is('.')) continue;
     fail(t, "a subscript is read as part of a name; " + describe_real(t) + " in a subscript is not read yet");
   }
@@ -334,6 +338,27 @@ Parsed Parser::name() {
     p = leaf(NodeKind::Symbol, id, first, last_);
     if (parts.vector) row_.vector_names.insert(id);
     row_.tex_of.emplace(id, std::string(text_.substr(first.off, std::max(last_.end, first.end) - first.off)));
+  }
+  // `v(0)`, `x(t_1)`, `v(t)`: a name written against a parenthesised single number or name is
+  // that quantity's value there (value_at(v, 0)), not a product; `m(v_1 - v_2)` stays a product.
+  // The document reader decides what the value is (docs/documents.md), or does not read the row.
+  if (p.node.kind == NodeKind::Symbol && !ctx_.functions.count(id) && peek().is('(') && !peek().space_before) {
+    const std::size_t save = pos_;
+    const Token& open = next();
+    Parsed arg = group(open, ")", true);
+    const Node& a = arg.node;
+    if (a.kind == NodeKind::Number || a.kind == NodeKind::Symbol ||
+        (a.kind == NodeKind::Neg && a.args[0].kind == NodeKind::Number)) {
+      arg.node.parenthesized = false;
+      const Token& close = toks_[pos_ - 1];
+      std::vector<Parsed> args;
+      args.push_back(std::move(p));
+      args.push_back(std::move(arg));
+      p = call("value_at", std::move(args), first);
+      extend(p, close);
+    } else {
+      pos_ = save;
+    }
   }
   // a declared function: f(x)
   if (ctx_.functions.count(id) && peek().is('(')) {
