@@ -360,6 +360,9 @@ void DocumentReader::mark_functions_and_vectors() {
         });
   }
   read_differentials(functions);
+  // (known before the rows are read: `c(t_{1/2})` in one display is the c(t) of another)
+  for (const auto& [k, names] : functions)
+    for (const auto& [name, var] : names) function_vars_[function_id(name, var)] = var;
   for (auto& r : rows_) {
     for (auto& ch : r.tex.chains)
       for (auto& side : ch.sides)

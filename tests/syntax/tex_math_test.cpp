@@ -256,6 +256,11 @@ TEST_CASE("tex: notation from public lecture notes", "[tex]") {
   CHECK(show(v) == "Delta_x = integral(value_at(v, t), t, t_0, t_1)");
   CHECK(expr("v(0) + x_1(t_{1/2}) + u(-1)") == "value_at(v, 0) + value_at(x_1, t_1over2) + value_at(u, -1)");
   CHECK(expr("m(v_1 - v_2) + a (b)") == "m*(v_1 - v_2) + a*(b)");
+  // chemistry's concentration [\mathrm{A}] is one name, with its subscripts, values and
+  // differentials; a bracket holding anything else is a bracket
+  CHECK(expr("k[\\mathrm{A}]^2 + [\\mathrm{A}]_0 + [\\text{H2}](0)") == "k*conc_A^2 + conc_A_0 + value_at(conc_H2, 0)");
+  CHECK(expr("\\frac{\\mathrm{d}[\\mathrm{A}]}{\\mathrm{d}t}") == "diff(conc_A, t)");
+  CHECK(expr("2[x + 1]") == "2*(x + 1)");
   // \Sigma F for a net force is a sum without bounds
   CHECK(error_of("\\Sigma F = m a").message() == "\\Sigma 'F' (a sum written with \\Sigma) is not read yet");
   CHECK(expr("\\Sigma_0 + \\Sigma") == "Sigma_0 + Sigma");

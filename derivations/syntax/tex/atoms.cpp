@@ -47,6 +47,7 @@ Parsed Parser::atom() {
       return name();
     }
     if (t.is('(')) return group(next(), ")", true);
+    if (t.is('[') && species_at(pos_)) return name();   // [\mathrm{A}], a concentration
     if (t.is('[')) {
       Parsed g = group(next(), "]", true);
       if (peek().is('_') || peek().is('^')) return eval_bar(std::move(g), toks_[pos_ - 1]);

@@ -247,9 +247,26 @@ std::string Parser::plain(std::size_t b, std::size_t e) const {
 
 bool Parser::starts_name(const Token& t) const {
   if (is_letter_tok(t)) return true;
+  if (t.is('[') && !toks_.empty() && &t >= toks_.data() && &t < toks_.data() + toks_.size())
+    return species_at(static_cast<std::size_t>(&t - toks_.data())) != 0;
   if (t.kind != TokKind::Cs) return false;
   return is_greek(t.text) || is_vector_cs(t.text) || decoration_of(t.text) != nullptr ||
          ((t.text == "mathrm" || t.text == "text" || t.text == "operatorname") && false);
+}
+
+// `[\mathrm{A}]`, `[\text{H2O}]`: a concentration, one name (conc_A) in chemistry's notation.
+// The index just after the `]` when the bracket at i holds only an upright species name, else 0.
+std::size_t Parser::species_at(std::size_t i) const {
+  if (i + 4 >= toks_.size() || !toks_[i].is('[')) return 0;
+  const Token& cs = toks_[i + 1];
+  if (!(cs.is_cs("mathrm") || cs.is_cs("text") || cs.is_cs("textrm") || cs.is_cs("ce") || cs.is_cs("mathsf")) ||
+      !toks_[i + 2].is('{'))
+    return 0;
+  const std::size_t close = match_[i + 2];
+  if (close <= i + 3 || close + 1 >= toks_.size() || !toks_[close + 1].is(']')) return 0;
+  for (std::size_t k = i + 3; k < close; ++k)
+    if (!(is_letter_tok(toks_[k]) || is_digit_tok(toks_[k]))) return 0;
+  return close + 2;
 }
 
 // Subscript text: letters, digits, Greek names, \text{..}; a finite sum's index is replaced by
@@ -419,6 +436,15 @@ void Parser::name_core(NameParts& parts) {
   if (is_letter_tok(t)) {
     parts.base = t.text;
     parts.plain_e = t.text == "e";
+    return;
+  }
+  if (t.is('[')) {   // a concentration [\mathrm{A}]
+    const std::size_t at_bracket = pos_ - 1, after = species_at(at_bracket);
+    if (after == 0) fail(t, "expected a name, found " + describe(t));
+    parts.base = "conc_";
+    for (std::size_t k = at_bracket + 3; k + 2 < after; ++k) parts.base += toks_[k].text;
+    pos_ = after;
+    last_ = toks_[after - 1];
     return;
   }
   if (t.kind != TokKind::Cs) fail(t, "expected a name, found " + describe(t));

@@ -72,6 +72,7 @@ class Parser {
   Parsed parse_range(std::size_t b, std::size_t e, const std::string& what, Parsed (Parser::*f)());
 
   bool starts_name(const Token& t) const;
+  std::size_t species_at(std::size_t i) const;
   std::string subscript_text(std::size_t b, std::size_t e) const;
   Parsed name();
   void name_core(NameParts& parts);
