@@ -260,8 +260,11 @@ StepResult Search::run() {
     }
     // a given of this display among the rows may not be needed by the counterexample at all
     // (link 2 of `E = ½mv² - GMm/r = -GMm/r`, against `E = …` and `v² = GM/r`): without it,
-    // a counterexample to the rest is no "one more law of the system"
-    if (const auto own = own_display_givens(refs); !own.empty() && !late()) {
+    // a counterexample to the rest is no "one more law of the system". (Not so for a
+    // differential equation for a function the row applies: without it the function's value is
+    // free, and any value "refutes".)
+    const std::vector<std::string> own = own_display_givens(refs);
+    if (!own.empty() && !late()) {
       std::vector<std::string> rest;
       for (const auto& l : refs)
         if (std::find(own.begin(), own.end(), l) == own.end()) rest.push_back(l);

@@ -246,6 +246,30 @@ bool Search::side_condition_only(const Verdict& v) {
   return v.kind == VerdictKind::Refuted && v.method.find("+ side condition") != std::string::npos;
 }
 
+// The rows among refs that differentiate a function the row applies (label, function name).
+std::vector<std::pair<std::string, std::string>> Search::equations_for_applied(
+    const std::vector<std::string>& refs) const {
+  std::set<std::string> applied;
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& x) {
+      if (x.kind == NodeKind::Call && x.text.find("__of_") != std::string::npos) applied.insert(x.text);
+    });
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& label : refs) {
+    const Step* st = d_.find(label);
+    if (!st) continue;
+    std::string differentiated;
+    for (const auto& side : st->claim.sides)
+      walk_nodes(side, [&](const Node& x) {
+        if (x.kind == NodeKind::Call && x.text == "diff" && !x.args.empty() && x.args[0].kind == NodeKind::Call &&
+            applied.count(x.args[0].text))
+          differentiated = x.args[0].text;
+      });
+    if (!differentiated.empty()) out.push_back({label, differentiated.substr(0, differentiated.find("__of_"))});
+  }
+  return out;
+}
+
 // The rows among refs that are givens of this row's own display (they introduced names).
 std::vector<std::string> Search::own_display_givens(const std::vector<std::string>& refs) const {
   std::vector<std::string> out;
@@ -330,27 +354,9 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
   // rows give a differential equation for a function the row applies, and which of its
   // solutions the row takes is fixed by conditions the text may state only in words (the
   // excess dies away far from the wall)
-  {
-    std::set<std::string> applied;
-    for (const auto& side : s_.claim.sides)
-      walk_nodes(side, [&](const Node& x) {
-        if (x.kind == NodeKind::Call && x.text.find("__of_") != std::string::npos) applied.insert(x.text);
-      });
-    for (const auto& label : refs) {
-      const Step* st = d_.find(label);
-      if (!st) continue;
-      std::string differentiated;
-      for (const auto& side : st->claim.sides)
-        walk_nodes(side, [&](const Node& x) {
-          if (x.kind == NodeKind::Call && x.text == "diff" && !x.args.empty() && x.args[0].kind == NodeKind::Call &&
-              applied.count(x.args[0].text))
-            differentiated = x.args[0].text;
-        });
-      if (!differentiated.empty())
-        return label + " is a differential equation for " + differentiated.substr(0, differentiated.find("__of_")) +
-               ", and which of its solutions the row takes is fixed by conditions the text may state in words";
-    }
-  }
+  if (const auto odes = equations_for_applied(refs); !odes.empty())
+    return odes.front().first + " is a differential equation for " + odes.front().second +
+           ", and which of its solutions the row takes is fixed by conditions the text may state in words";
   if (prose_names_a_regime(row_.hint))
     return "the text before the display names a regime or a law the search does not read";
   return "";
