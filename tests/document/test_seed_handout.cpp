@@ -73,9 +73,39 @@ TEST_CASE("seed handout: checked as written, nothing refuted, v_e reported") {
     }
 }
 
+namespace {
+
+// The seed with `right` replaced by `wrong`, checked: its report, the exit code, and the line
+// and column of the change.
+struct Planted {
+  nlohmann::json report;
+  int exit_code = 0, line = 0;
+  long col = 0;
+};
+
+Planted check_planted(const std::string& right, const std::string& wrong) {
+  std::string text = read_all(seed_path());
+  const std::size_t at = text.find(right);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, right.size(), wrong);
+  Planted p;
+  p.line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
+  p.col = static_cast<long>(at - text.rfind('\n', at));
+  const std::string tmp = "seed_slip_" + std::to_string(::getpid()) + ".md";
+  {
+    std::ofstream out(tmp);
+    out << text;
+  }
+  cli_test::Run r = cli_test::run({"check", "--json", tmp});
+  std::remove(tmp.c_str());
+  p.report = nlohmann::json::parse(r.out);
+  p.exit_code = r.exit_code;
+  return p;
+}
+
+}  // namespace
+
 TEST_CASE("seed handout: a slip planted in a derived row is refuted at that row") {
-  const std::string original = read_all(seed_path());
-  REQUIRE(!original.empty());
   // the elastic velocity after impact (2 m_2 v_2 made m_2 v_2), the general impact velocity
   // (+ m_2 v_2 made - m_2 v_2), the integrated rocket equation (-u_e made +u_e)
   const std::vector<std::pair<std::string, std::string>> slips = {
@@ -84,25 +114,13 @@ TEST_CASE("seed handout: a slip planted in a derived row is refuted at that row"
       {"v = -u_e \\ln \\left(\\frac{m_r}{m_0} \\right) - gt", "v = u_e \\ln \\left(\\frac{m_r}{m_0} \\right) - gt"}};
   for (const auto& [right, wrong] : slips) {
     INFO(wrong);
-    std::string text = original;
-    const std::size_t at = text.find(right);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, right.size(), wrong);
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-    const std::string tmp = "seed_slip_" + std::to_string(::getpid()) + ".md";
-    {
-      std::ofstream out(tmp);
-      out << text;
-    }
-    cli_test::Run r = cli_test::run({"check", "--json", tmp});
-    std::remove(tmp.c_str());
-    const auto j = nlohmann::json::parse(r.out);
+    const Planted p = check_planted(right, wrong);
     bool refuted_there = false;
-    for (const auto& f : j["files"])
+    for (const auto& f : p.report["files"])
       for (const auto& s : f["steps"])
-        if (s["verdict"] == "refuted") refuted_there = refuted_there || s["line"] == line;
+        if (s["verdict"] == "refuted") refuted_there = refuted_there || s["line"] == p.line;
     CHECK(refuted_there);
-    CHECK(r.exit_code == 1);
+    CHECK(p.exit_code == 1);
   }
 }
 
@@ -110,32 +128,17 @@ TEST_CASE("seed handout: a slip planted in a derived row is refuted at that row"
 // F - D - m_r g cos(theta) = m_r a beside it: together the givens force m_r g = 0, and before
 // that pin was caught (docs/soundness.md, "a product that is zero") each slip below "followed".
 TEST_CASE("seed handout: a slip in the ideal rocket's display is never proved, though its givens pin m_r g = 0") {
-  const std::string original = read_all(seed_path());
-  REQUIRE(!original.empty());
   const std::vector<std::pair<std::string, std::string>> slips = {
       {"m_r a &= u_e \\mu - m_r g", "m_r a &= u_e \\mu + m_r g"},
       {"m_r \\frac{dv}{dt} &= -u_e \\frac{dm_r}{dt} - m_r g", "m_r \\frac{dv}{dt} &= +u_e \\frac{dm_r}{dt} - m_r g"},
       {"dv &= -u_e \\frac{dm_r}{m_r} - g dt", "dv &= +u_e \\frac{dm_r}{m_r} - g dt"}};
   for (const auto& [right, wrong] : slips) {
     INFO(wrong);
-    std::string text = original;
-    const std::size_t at = text.find(right);
-    REQUIRE(at != std::string::npos);
-    text.replace(at, right.size(), wrong);
-    const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<long>(at), '\n'));
-    const long col = static_cast<long>(at - text.rfind('\n', at));
-    const std::string tmp = "seed_pin_" + std::to_string(::getpid()) + ".md";
-    {
-      std::ofstream out(tmp);
-      out << text;
-    }
-    cli_test::Run r = cli_test::run({"check", "--json", tmp});
-    std::remove(tmp.c_str());
-    const auto j = nlohmann::json::parse(r.out);
+    const Planted p = check_planted(right, wrong);
     bool seen = false;
-    for (const auto& f : j["files"])
+    for (const auto& f : p.report["files"])
       for (const auto& s : f["steps"])
-        if (s["line"] == line && s["col"].get<long>() == col) {
+        if (s["line"] == p.line && s["col"].get<long>() == p.col) {
           seen = true;
           INFO(s.dump());
           CHECK(s["verdict"] != "proved");
