@@ -543,6 +543,9 @@ std::vector<std::vector<std::string>> Search::candidate_sets() const {
   // then the rows that speak most of the claim's names, wherever they stand (the law (9.6)
   // and the definition (9.7) for the general impact, pages after them)
   const std::vector<std::string> relevant = most_relevant();
+  // (the most relevant row alone first: beside it, a slip that shares its names may pin a
+  // quantity, and then the pair proves nothing although the one row proves the claim)
+  if (!relevant.empty()) add(with_locals({relevant.front()}));
   for (std::size_t n : {2u, 3u, 4u})
     if (relevant.size() >= n - 1)
       add(with_locals(std::vector<std::string>(relevant.begin(),

@@ -65,6 +65,23 @@ void DocumentReader::inline_givens() {
     if (e >= 3 && src.compare(e - 2, 2, "at") == 0 && !std::isalpha(static_cast<unsigned char>(src[e - 3])))
       at_point.insert(i);
   }
+  // `Discarding the root $T = 0$`, `other than $x = 0$`: an equation the words set aside is no
+  // given (the words before it in its sentence, up to a few of them)
+  for (std::size_t i = 0; i < doc_.inlines.size(); ++i) {
+    std::size_t p = offset_of(doc_.inlines[i].origin);
+    std::size_t b = p > 48 ? p - 48 : 0;
+    for (std::size_t k = p; k > b; --k)
+      if (src[k - 1] == '.' || src[k - 1] == '\n' || (k < p - 2 && src[k - 1] == '$')) {
+        b = k;
+        break;
+      }
+    std::string before = src.substr(b, p - b);
+    for (auto& ch : before) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    // ("not" is no such word: "the pin cannot take a moment, $M(0) = 0$" asserts it)
+    for (const char* w : {"discard", "exclud", "except", "other than", "apart from", "rather than", "instead of",
+                          "reject"})
+      if (before.find(w) != std::string::npos) at_point.insert(i);
+  }
   for (std::size_t mi = 0; mi < doc_.inlines.size(); ++mi) {
     const auto& m = doc_.inlines[mi];
     if (at_point.count(mi)) continue;

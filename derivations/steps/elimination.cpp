@@ -2,6 +2,7 @@
 #include "derivations/steps/elimination.hpp"
 
 #include <algorithm>
+#include <map>
 
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/symbolic/inspect.hpp"
@@ -89,17 +90,57 @@ struct Candidate {
 // becomes m' + m_r'): the cancellation an author makes, read before any elimination could
 // read the equation as u_e = 0 (a division by u_e, as eliminating with coefficient u_e would be).
 // A single term (m*a = 0) is left whole: which factor is zero is the question.
+// Does e divide by anything (a negative power)?
+bool has_denominator(const ex& e) {
+  if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+      GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_negative())
+    return true;
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_denominator(e.op(i))) return true;
+  return false;
+}
+
 ex without_common_factor(const ex& num) {
   if (!GiNaC::is_a<GiNaC::add>(num)) return num;
-  try {
-    ex g = num.op(0);
-    for (std::size_t i = 1; i < num.nops() && !GiNaC::is_a<GiNaC::numeric>(g); ++i) g = GiNaC::gcd(g, num.op(i));
-    if (GiNaC::is_a<GiNaC::numeric>(g)) return num;
-    ex q;
-    if (GiNaC::divide(num, g, q)) return q.expand();
-  } catch (const std::exception&) {
+  // the factors of one term with their integer exponents (a number contributes none)
+  auto factors_of = [](const ex& term) {
+    std::map<ex, long, GiNaC::ex_is_less> f;
+    auto add = [&](const ex& x) {
+      if (GiNaC::is_a<GiNaC::numeric>(x)) return;
+      if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+          GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_pos_integer())
+        f[x.op(0)] += GiNaC::ex_to<GiNaC::numeric>(x.op(1)).to_long();
+      else
+        f[x] += 1;
+    };
+    if (GiNaC::is_a<GiNaC::mul>(term))
+      for (std::size_t i = 0; i < term.nops(); ++i) add(term.op(i));
+    else
+      add(term);
+    return f;
+  };
+  // the product of the quantities common to every term, each to its least power
+  auto common = factors_of(num.op(0));
+  for (std::size_t i = 1; i < num.nops() && !common.empty(); ++i) {
+    const auto f = factors_of(num.op(i));
+    for (auto it = common.begin(); it != common.end();) {
+      auto jt = f.find(it->first);
+      if (jt == f.end()) {
+        it = common.erase(it);
+      } else {
+        it->second = std::min(it->second, jt->second);
+        ++it;
+      }
+    }
   }
-  return num;
+  if (common.empty()) return num;
+  ex g = 1;
+  for (const auto& [x, k] : common) g *= GiNaC::pow(x, k);
+  try {
+    return GiNaC::expand(num / g);
+  } catch (const std::exception&) {
+    return num;
+  }
 }
 
 // Does solving num = c*x + r = 0 for x read a product as one of its factors? With r = 0 and c
@@ -169,6 +210,29 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
   // (v1 eliminated by a later reference makes dh = v1^2/(2 g) usable).
   std::vector<int> pending(eqs.size());
   for (std::size_t i = 0; i < eqs.size(); ++i) pending[i] = static_cast<int>(i);
+  // a value as written first (c = 0 beside c*u = 0: c is eliminated with it, not read as the
+  // zero factor of c*u)
+  std::stable_partition(pending.begin(), pending.end(), [&](int i) {
+    const ex e = c.atoms(eqs[static_cast<std::size_t>(i)].e).expand();
+    const auto atoms = c.symbols_in({e});
+    if (atoms.size() != 1) return false;
+    const ex k = e.coeff(atoms.front(), 1), r = (e - k * atoms.front()).expand();
+    return GiNaC::is_a<GiNaC::numeric>(k) && !k.is_zero() && GiNaC::is_a<GiNaC::numeric>(r);
+  });
+  // each equation atomized, with the author's own cancellation made once, before an earlier
+  // elimination hides it (u_e*m' = -u_e*m_r' after u_e = m_r*(a + g)/mu is a product of three
+  // factors)
+  std::vector<ex> own(eqs.size());
+  for (std::size_t i = 0; i < eqs.size(); ++i) {
+    own[i] = c.atoms(eqs[i].e);
+    if (estimate_expanded_terms(own[i]) <= static_cast<double>(c.opt.max_terms)) try {
+        // (normal() only where a term has a denominator: it is the costly part)
+        const ex e = has_denominator(own[i]) ? GiNaC::numer(GiNaC::normal(own[i])) : own[i];
+        const ex stripped = without_common_factor(e.expand());
+        if (!stripped.is_equal(e.expand())) own[i] = stripped;
+      } catch (const std::exception&) {
+      }
+  }
   for (int pass = 0; pass < 8 && !pending.empty(); ++pass) {
     std::size_t before = red.eliminated.size();
     std::vector<int> retry;
@@ -176,13 +240,7 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
     for (int idx : pending) {
       std::vector<int> sources{idx};
       std::vector<ex> used;
-      ex e = c.atoms(eqs[idx].e);
-      // the author's own cancellation, before an earlier elimination hides it (u_e*m' = -u_e*m_r'
-      // after u_e = m_r*(a + g)/mu is a product of three factors)
-      if (estimate_expanded_terms(e) <= static_cast<double>(c.opt.max_terms)) try {
-          e = without_common_factor(GiNaC::numer(GiNaC::normal(e)).expand());
-        } catch (const std::exception&) {
-        }
+      ex e = own[static_cast<std::size_t>(idx)];
       for (const auto& el : red.eliminated) {
         if (!e.has(el.var)) continue;
         e = e.subs(el.var == el.value, GiNaC::subs_options::no_pattern);

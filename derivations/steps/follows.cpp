@@ -190,13 +190,16 @@ bool has_application_at(const ex& e, const ex& s) {
 //  - a symbol's value is identically zero once every elimination is in, though nothing
 //    written as `x = number` (D = 0, e = 1, m_1/m_2 = 0) makes its own equation say so (u_e = 0
 //    from m_r*a = u_e*mu - m_r*g, its derivative in t and m_r*v' = -u_e*m_r' - m_r*g).
-// The claim x = 0 itself (a = 0 from m*a = F, F = 0) is the cancellation the author made: a
-// claim that is a multiple of x is exempt.
+// The claim x = 0 itself (a = 0 from m*a = F, F = 0) is the cancellation the author made, and
+// the claim c*x = 0 is what the references say: both are exempt (up to a number), a claim that
+// merely has x as a factor is not.
 static std::string pinned_product(StepContext& c, const Reduction& red, const ex& claim) {
   const ex t = c.atoms(claim);
-  auto multiple_of = [&](const ex& x) {
+  // the claim is x = 0 (or the zero product itself), up to a number: not m*(g + v^2/L - …) = 0,
+  // which m = 0 would "prove" whatever the bracket
+  auto claim_is = [&](const ex& x) {
     try {
-      return t.has(x) && !GiNaC::normal(t / x).has(x);
+      return !x.is_zero() && !t.is_zero() && GiNaC::is_a<GiNaC::numeric>(GiNaC::normal(t / x));
     } catch (const std::exception&) {
       return false;
     }
@@ -208,13 +211,16 @@ static std::string pinned_product(StepContext& c, const Reduction& red, const ex
       return false;
     }
   };
-  GiNaC::exmap written;   // x = 0, e = 1 as written: a number times x, and a number
+  // x = 0, e = 1 as written (a number times x, and a number), and the factor the claim itself
+  // reads as zero: what a symbol's value may be zero because of
+  GiNaC::exmap written;
   for (const auto& el : red.eliminated)
-    if (!el.factor_of_zero && GiNaC::is_a<GiNaC::numeric>(el.coef_checked) &&
-        GiNaC::is_a<GiNaC::numeric>(el.value_then))
+    if ((!el.factor_of_zero && GiNaC::is_a<GiNaC::numeric>(el.coef_checked) &&
+         GiNaC::is_a<GiNaC::numeric>(el.value_then)) ||
+        (el.factor_of_zero && (claim_is(el.var) || claim_is(el.product))))
       written[el.var] = el.value_then;
   for (const auto& el : red.eliminated) {
-    if (multiple_of(el.var)) continue;
+    if (claim_is(el.var) || (el.factor_of_zero && claim_is(el.product))) continue;
     if (el.factor_of_zero) return c.text(c.atoms.restore(el.product)) + " = 0";
     // (a symbol only: a derivative that the references make zero, E'(t) = 0 from Newton's
     // law, is what they say, not a component)

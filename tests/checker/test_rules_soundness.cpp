@@ -680,5 +680,7 @@ ok_zero: m*g = 0
     by rewrite def1, def2
 )");
   require_not_accepted(p, "bad_k");
-  CHECK(p.at("ok_zero").verdict.holds());   // what the givens say, as a claim of its own
+  // what the givens say, as a claim of its own: true, but the eliminations read it through the
+  // factor F (m = F/a, then F*g = 0), so it is left undecided rather than proved on one factor
+  require_not_refuted(p, "ok_zero");
 }

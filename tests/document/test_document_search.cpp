@@ -276,3 +276,19 @@ TEST_CASE("document search: v(0) and v(t) are values of the function v, never pr
   const auto pinned = check("With $v(0) = v_0$ the law\n\n$$\\frac{dv}{dt} = -k v$$\n\nholds, and\n\n$$v_0 = 0$$\n");
   CHECK(at(pinned, 7).verdict != "proved");
 }
+
+// An equation the words set aside is no given: with `$T = 0$` in force, the flight time would
+// "follow" only through the pin T = 0 (and a written value is eliminated first).
+TEST_CASE("document search: an equation the text discards is not a given") {
+  const auto rows = check("$$v_0 T \\sin a - \\frac{1}{2} g T^2 = 0$$\n"   // 1
+                          "\n"
+                          "Discarding the root $T = 0$, we find\n"
+                          "\n"
+                          "$$T = \\frac{2 v_0 \\sin a}{g}$$\n");           // 5
+  CHECK(at(rows, 5).verdict == "proved");
+  // "cannot" asserts what follows it
+  const auto pin = document_test::check("pin.md", "The pin cannot take a moment, $M(0) = 0$, and\n\n$$M(x) = R x$$\n");
+  bool given = false;
+  for (const auto& r : pin) given = given || (r.line == 1 && r.verdict == "premise");
+  CHECK(given);
+}
