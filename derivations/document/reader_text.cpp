@@ -9,7 +9,6 @@
 
 namespace dc::document_detail {
 
-// An inline equation of the prose (`$e = 1$`) is a given for the display that follows it.
 std::string DocumentReader::read_values_at(Node& n, const std::map<std::string, std::string>& here) {
   std::string why;
   walk(n, [&](Node& x) {
@@ -36,6 +35,7 @@ std::string DocumentReader::read_values_at(Node& n, const std::map<std::string, 
   return why;
 }
 
+// An inline equation of the prose (`$e = 1$`) is a given for the display that follows it.
 void DocumentReader::inline_givens() {
   // `taking $v = 0$ at $t = 0$`: a value at a point (an initial condition), not a condition
   // of the display: neither equation is read as a given
@@ -71,7 +71,7 @@ void DocumentReader::inline_givens() {
     std::size_t p = offset_of(doc_.inlines[i].origin);
     std::size_t b = p > 48 ? p - 48 : 0;
     for (std::size_t k = p; k > b; --k)
-      if (src[k - 1] == '.' || src[k - 1] == '\n' || (k < p - 2 && src[k - 1] == '$')) {
+      if (src[k - 1] == '.' || src[k - 1] == '\n' || (k + 2 < p && src[k - 1] == '$')) {
         b = k;
         break;
       }

@@ -86,10 +86,6 @@ struct Candidate {
   bool factor_of_zero = false;
 };
 
-// num with the product of quantities common to all its terms divided out (u_e*m' + u_e*m_r'
-// becomes m' + m_r'): the cancellation an author makes, read before any elimination could
-// read the equation as u_e = 0 (a division by u_e, as eliminating with coefficient u_e would be).
-// A single term (m*a = 0) is left whole: which factor is zero is the question.
 // Does e divide by anything (a negative power)?
 bool has_denominator(const ex& e) {
   if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
@@ -100,6 +96,10 @@ bool has_denominator(const ex& e) {
   return false;
 }
 
+// num with the product of quantities common to all its terms divided out (u_e*m' + u_e*m_r'
+// becomes m' + m_r'): the cancellation an author makes, read before any elimination could
+// read the equation as u_e = 0 (a division by u_e, as eliminating with coefficient u_e would be).
+// A single term (m*a = 0) is left whole: which factor is zero is the question.
 ex without_common_factor(const ex& num) {
   if (!GiNaC::is_a<GiNaC::add>(num)) return num;
   // the factors of one term with their integer exponents (a number contributes none)
@@ -210,15 +210,6 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
   // (v1 eliminated by a later reference makes dh = v1^2/(2 g) usable).
   std::vector<int> pending(eqs.size());
   for (std::size_t i = 0; i < eqs.size(); ++i) pending[i] = static_cast<int>(i);
-  // a value as written first (c = 0 beside c*u = 0: c is eliminated with it, not read as the
-  // zero factor of c*u)
-  std::stable_partition(pending.begin(), pending.end(), [&](int i) {
-    const ex e = c.atoms(eqs[static_cast<std::size_t>(i)].e).expand();
-    const auto atoms = c.symbols_in({e});
-    if (atoms.size() != 1) return false;
-    const ex k = e.coeff(atoms.front(), 1), r = (e - k * atoms.front()).expand();
-    return GiNaC::is_a<GiNaC::numeric>(k) && !k.is_zero() && GiNaC::is_a<GiNaC::numeric>(r);
-  });
   // each equation atomized, with the author's own cancellation made once, before an earlier
   // elimination hides it (u_e*m' = -u_e*m_r' after u_e = m_r*(a + g)/mu is a product of three
   // factors)
@@ -227,12 +218,21 @@ Reduction reduce_once(StepContext& c, const std::vector<Eq>& eqs, const ex& targ
     own[i] = c.atoms(eqs[i].e);
     if (estimate_expanded_terms(own[i]) <= static_cast<double>(c.opt.max_terms)) try {
         // (normal() only where a term has a denominator: it is the costly part)
-        const ex e = has_denominator(own[i]) ? GiNaC::numer(GiNaC::normal(own[i])) : own[i];
-        const ex stripped = without_common_factor(e.expand());
-        if (!stripped.is_equal(e.expand())) own[i] = stripped;
+        const ex e = (has_denominator(own[i]) ? GiNaC::numer(GiNaC::normal(own[i])) : own[i]).expand();
+        const ex stripped = without_common_factor(e);
+        if (!stripped.is_equal(e)) own[i] = stripped;
       } catch (const std::exception&) {
       }
   }
+  // a value as written first (c = 0 beside c*u = 0: c is eliminated with it, not read as the
+  // zero factor of c*u)
+  std::stable_partition(pending.begin(), pending.end(), [&](int i) {
+    const ex e = own[static_cast<std::size_t>(i)].expand();
+    const auto atoms = c.symbols_in({e});
+    if (atoms.size() != 1) return false;
+    const ex k = e.coeff(atoms.front(), 1), r = (e - k * atoms.front()).expand();
+    return GiNaC::is_a<GiNaC::numeric>(k) && !k.is_zero() && GiNaC::is_a<GiNaC::numeric>(r);
+  });
   for (int pass = 0; pass < 8 && !pending.empty(); ++pass) {
     std::size_t before = red.eliminated.size();
     std::vector<int> retry;

@@ -273,8 +273,9 @@ TEST_CASE("document search: v(0) and v(t) are values of the function v, never pr
   CHECK(at(rows, 13).verdict == "undecided");
   CHECK(at(rows, 13).reason.find("no row makes x a function") != std::string::npos);
   // the equation of the text `$v(0) = v_0$` is a value of v, not v*0 = v_0 (which pinned v_0 = 0)
-  const auto pinned = check("With $v(0) = v_0$ the law\n\n$$\\frac{dv}{dt} = -k v$$\n\nholds, and\n\n$$v_0 = 0$$\n");
-  CHECK(at(pinned, 7).verdict != "proved");
+  // (read as v*0 = v_0, the two equations of the text "proved" v_0 = 0)
+  const auto pinned = check("With $v(0) = v_0$ and $\\frac{dv}{dt} = -k v$ we have\n\n$$v_0 = 0$$\n");
+  CHECK(at(pinned, 3).verdict != "proved");
 }
 
 // An equation the words set aside is no given: with `$T = 0$` in force, the flight time would

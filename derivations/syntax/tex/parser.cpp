@@ -687,10 +687,6 @@ Parsed Parser::term(bool operand) {
         fail(t, "two numbers side by side (a thousands separator, 10\\,000?) are not read yet: write one number");
     }
     Parsed right = factor();
-    const Node& last = left.node.kind == NodeKind::Mul && !left.node.parenthesized ? left.node.args[1] : left.node;
-    if (t.is('(') && !t.space_before && last.kind == NodeKind::Symbol && right.node.kind == NodeKind::Symbol)
-      row_.readings.push_back({at(t), 1, last.text + "(" + right.node.text + ") read as the product " + last.text + "*(" +
-                                             right.node.text + "); declare " + last.text + " a function if it is one"});
     left = binary(NodeKind::Mul, std::move(left), std::move(right), t);
   }
   return left;
