@@ -112,6 +112,7 @@ inline std::string verdict_description(const Verdict& v) {
     // A side condition's detail ("not defined ...: x != 0 (divisor) fails at x = 0") names the point.
     if (!point.empty() && (detail_repeats || v.detail.find(point) == std::string::npos))
       os << "\n  counterexample: " << point;
+    if (!v.function_values.empty()) os << "\n  function values drawn there: " << v.function_values;
     if (!v.lhs_value.empty() || !v.rhs_value.empty()) os << "\n  lhs = " << v.lhs_value << "\n  rhs = " << v.rhs_value;
     if (!v.hint.empty()) os << "\n  hint: " << v.hint;
   }

@@ -90,6 +90,7 @@ void put(Writer& w, const Verdict& v) {
   w.str(v.rhs_value);
   w.str(v.lhs_label);
   w.str(v.rhs_label);
+  w.str(v.function_values);
   w.str(v.residual);
   w.str(v.reason);
   w.u64(v.side_conditions.size());
@@ -117,6 +118,7 @@ Verdict get_verdict(WireReader& r) {
   v.rhs_value = r.str();
   v.lhs_label = r.str();
   v.rhs_label = r.str();
+  v.function_values = r.str();
   v.residual = r.str();
   v.reason = r.str();
   v.side_conditions.resize(r.u64());

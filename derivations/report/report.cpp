@@ -80,6 +80,7 @@ std::string verdict_evidence(const Verdict& v, const std::string& indent) {
       for (const auto& [name, value] : v.point) pt += (pt.empty() ? "" : ", ") + name + " = " + value;
       out += indent + "counterexample: " + pt + "\n";
     }
+    if (!v.function_values.empty()) out += indent + "function values drawn there: " + v.function_values + "\n";
     if (!v.lhs_value.empty() || !v.rhs_value.empty())
       out += indent + (v.lhs_label.empty() ? std::string("left side") : v.lhs_label) + " = " + v.lhs_value + ", " +
              (v.rhs_label.empty() ? std::string("right side") : v.rhs_label) + " = " + v.rhs_value + "\n";
@@ -113,6 +114,7 @@ nlohmann::ordered_json verdict_json(const Verdict& v) {
     j["rhs_value"] = v.rhs_value;
     if (!v.lhs_label.empty()) j["lhs_label"] = v.lhs_label;
     if (!v.rhs_label.empty()) j["rhs_label"] = v.rhs_label;
+    if (!v.function_values.empty()) j["function_values"] = v.function_values;
     if (!v.hint.empty()) j["hint"] = v.hint;
   }
   if (v.holds() && !v.hint.empty()) j["hint"] = v.hint;

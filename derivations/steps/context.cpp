@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/printer.hpp"
 #include "derivations/symbolic/inspect.hpp"
 
@@ -79,7 +80,7 @@ Verdict Combiner::result() const {
 // --- expressions ----------------------------------------------------------------------
 
 ex Atomizer::operator()(const ex& e) {
-  if (pool_function_index(e) >= 0) {
+  if (pool_function_index(e) >= 0 || is_integral_quantity(e)) {
     auto it = fwd.find(e);
     if (it != fwd.end()) return it->second;
     GiNaC::realsymbol s("dc_atom" + std::to_string(n++));
@@ -91,7 +92,7 @@ ex Atomizer::operator()(const ex& e) {
 }
 
 bool free_of_unknowns(const ex& e) {
-  if (GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0) return false;
+  if (GiNaC::is_a<GiNaC::symbol>(e) || pool_function_index(e) >= 0 || is_integral_quantity(e)) return false;
   for (std::size_t i = 0; i < e.nops(); ++i)
     if (!free_of_unknowns(e.op(i))) return false;
   return true;

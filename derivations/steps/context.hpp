@@ -41,7 +41,8 @@ struct Combiner {
   Verdict result() const;
 };
 
-// --- atoms: abstract function applications become symbols while eliminating ----------
+// --- atoms: abstract function applications and integrals of them (symbolic/integral_atom.hpp)
+// become symbols while eliminating
 struct Atomizer : GiNaC::map_function {
   GiNaC::exmap fwd, back;
   int n = 0;

@@ -11,6 +11,7 @@
 #include <cln/real.h>
 
 #include "derivations/symbolic/inspect.hpp"
+#include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/printer.hpp"
 
 namespace dc::detail {
@@ -212,6 +213,11 @@ std::string canon_text(const ex& e) {
       return "1/" + t;
     }
     return power_text(b, x);
+  }
+  if (auto v = integral_view(e)) {
+    auto end = [](const ex& x, int inf) { return inf > 0 ? std::string("oo") : inf < 0 ? std::string("-oo") : canon_text(x); };
+    return "integral(" + canon_text(v->f) + ", " + canon_text(v->t) + ", " + end(v->a, v->a_inf) + ", " +
+           end(v->b, v->b_inf) + ")";
   }
   if (GiNaC::is_a<GiNaC::function>(e)) {
     const auto& f = GiNaC::ex_to<GiNaC::function>(e);

@@ -13,6 +13,7 @@
 #include "derivations/symbolic/printer.hpp"
 
 #include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/integral_atom.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -379,6 +380,22 @@ class Builder {
   PNode function(const ex& e) {
     PNode n;
     n.kind = Kind::Function;
+    if (auto v = integral_view(e)) {   // an integral of a declared function (integral_atom.hpp)
+      n.fname = "integral";
+      n.ftex = "\\int";
+      auto end = [&](const ex& x, int inf) {
+        if (!inf) return build(x);
+        PNode o;
+        o.kind = Kind::Symbol;
+        o.text = inf > 0 ? "oo" : "-oo";
+        o.tex = inf > 0 ? "\\infty" : "-\\infty";
+        o.key = o.text;
+        return o;
+      };
+      n.kids = {build(v->f), build(v->t), end(v->a, v->a_inf), end(v->b, v->b_inf)};
+      n.key = render_key(n);
+      return n;
+    }
     n.fname = function_name(e, &n.ftex);
     for (std::size_t i = 0; i < e.nops(); ++i) n.kids.push_back(build(e.op(i)));
     n.key = render_key(n);
@@ -630,6 +647,9 @@ class Renderer {
 
   std::string function(const PNode& n) {
     if (!latex()) return n.fname + "(" + args_text(n) + ")";
+    if (n.fname == "integral" && n.kids.size() == 4)
+      return "\\int_{" + render(n.kids[2]) + "}^{" + render(n.kids[3]) + "} " + render(n.kids[0]) + " \\, \\mathrm{d}" +
+             render(n.kids[1]);
     if (n.fname == "exp" && n.kids.size() == 1) return "\\mathrm{e}^{" + render(n.kids[0]) + "}";
     if (n.fname == "abs" && n.kids.size() == 1) return "\\left|" + render(n.kids[0]) + "\\right|";
     if (const char* t = trig_head(n.fname); t && n.kids.size() == 1) {

@@ -27,6 +27,7 @@
 #include "derivations/syntax/source.hpp"
 #include "derivations/symbolic/calculus_hooks.hpp"
 #include "derivations/symbolic/inspect.hpp"
+#include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/symbols.hpp"
 #include "derivations/syntax/units.hpp"
 
@@ -251,8 +252,30 @@ class Converter {
   // at the ends (derivations/calculus/definite.hpp). Otherwise, or when the integral diverges,
   // the claim is undecided with the reason.
   GiNaC::ex integral_value(const Node& n, const IntegralParts& p) {
-    if (p.f.is_polynomial(p.t) && !p.a_inf && !p.b_inf) {
-      GiNaC::ex v = guarded(n, [&] { return GiNaC::integral(p.t, p.a, p.b, p.f).eval_integ(); });
+    // an integrand that applies a declared function: a quantity of its own (integral_atom.hpp)
+    if (integrand_applies_function(p.f, p.t)) {
+      GiNaC::ex v;
+      try {
+        v = integral_quantity(IntegralSpec{p.f, p.t, p.a, p.b, p.a_inf, p.b_inf, &p.bound},
+                              [&](const GiNaC::ex& part) { return integrand_value(n, p, part); });
+      } catch (const UndecidedLimit&) {
+        throw;
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw UndecidedLimit("'" + short_text(n) + "' inside an expression was not evaluated: " + e.what(), n.pos);
+      }
+      return p.negate ? GiNaC::ex(-v) : v;
+    }
+    const GiNaC::ex v = integrand_value(n, p, p.f);
+    return p.negate ? GiNaC::ex(-v) : v;
+  }
+
+  // The value of the integral of `f` (the integrand or a part of it) between p's limits, before
+  // p.negate is applied.
+  GiNaC::ex integrand_value(const Node& n, const IntegralParts& p, const GiNaC::ex& f) {
+    if (f.is_polynomial(p.t) && !p.a_inf && !p.b_inf) {
+      GiNaC::ex v = guarded(n, [&] { return GiNaC::integral(p.t, p.a, p.b, f).eval_integ(); });
       bool residual = false;
       for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
         residual = residual || GiNaC::is_a<GiNaC::integral>(*it);
@@ -261,9 +284,9 @@ class Converter {
     if (!calculus_hooks().definite)
       throw UndecidedLimit("'" + short_text(n) + "' inside an expression was not evaluated: no integral method is installed (dc::calculus::install())", n.pos);
     const integrals::Definite d =
-        calculus_hooks().definite(p.f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, p.bound);
+        calculus_hooks().definite(f, GiNaC::ex_to<GiNaC::symbol>(p.t), p.a, p.a_inf, p.b, p.b_inf, p.bound);
     using K = integrals::Definite::Kind;
-    if (d.kind == K::Value) return p.negate ? GiNaC::ex(-d.value) : d.value;
+    if (d.kind == K::Value) return d.value;
     if (d.kind == K::Diverges)
       throw UndecidedLimit("'" + short_text(n) + "' diverges" +
                                (d.infinite > 0 ? " to oo" : d.infinite < 0 ? " to -oo" : "") + " (" + d.evidence + ")",

@@ -56,6 +56,10 @@ struct Verdict {
   // limit step (the limit of the expression against the written value). Empty: "left side",
   // "right side".
   std::string lhs_label, rhs_label;
+  // Refuted where the sides apply declared functions (f(b), diff(theta(t), t)): the values the
+  // probe drew for those applications at the point, "f(b) = -0.0465893", without which the
+  // point alone does not show why the sides differ.
+  std::string function_values;
 
   // Undecided: residual (deterministic text) and the reason.
   std::string residual;

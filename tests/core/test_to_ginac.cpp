@@ -6,6 +6,7 @@
 
 #include "derivations/syntax/expr.hpp"
 #include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/symbols.hpp"
 #include "derivations/syntax/units.hpp"
 
@@ -162,8 +163,12 @@ TEST_CASE("to_ginac: integrals in expressions have a value or an undecided reaso
     FAIL("no UndecidedLimit for " << s);
     throw;
   };
-  CHECK_THAT(undecided("x + integral(v(t), t, 0, t1)").what(), Catch::Contains("inside an expression was not evaluated"));
-  CHECK(undecided("x + integral(v(t), t, 0, t1)").pos.col == 5);
+  CHECK_THAT(undecided("x + integral(exp(t^2), t, 0, t1)").what(), Catch::Contains("inside an expression was not evaluated"));
+  CHECK(undecided("x + integral(exp(t^2), t, 0, t1)").pos.col == 5);
+  // an integral of a declared function is a quantity of its own (integral_atom.hpp), linear in
+  // its integrand
+  CHECK(has_integral_quantity(conv("x + integral(v(t), t, 0, t1)")));
+  CHECK((conv("integral(3*v(t) + t, t, 0, t1)") - conv("3*integral(v(t), t, 0, t1) + t1^2/2")).expand().is_zero());
   // 1/t from 1 to x: x may lie on either side of 1, and 1/t is not continuous on the whole line
   CHECK_THAT(undecided("diff(integral(1/t, t, 1, x), x)").what(), Catch::Contains("order of the limits"));
   CHECK_THAT(undecided("integral(1/t, t, 1, oo)").what(), Catch::Contains("diverges to oo"));

@@ -1,0 +1,97 @@
+// A definite integral of a declared function is a quantity that references can determine
+// (symbolic/integral_atom.hpp): linear in its integrand, one quantity per integrand and limits,
+// differentiated by Leibniz's rule, and never the ground of a refutation that rests on treating
+// two such integrals as unrelated.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include "derivations/reader/derivation.hpp"
+#include "derivations/rules/check.hpp"
+
+namespace {
+
+struct Checked {
+  dc::Derivation d;
+  dc::CheckSummary sum;
+  dc::VerdictKind at(const std::string& label) const {
+    for (std::size_t i = 0; i < d.steps.size(); ++i)
+      if (d.steps[i].label == label) return sum.results.at(i).verdict.kind;
+    FAIL("no step " << label);
+    return dc::VerdictKind::Undecided;
+  }
+  std::string reason(const std::string& label) const {
+    for (std::size_t i = 0; i < d.steps.size(); ++i)
+      if (d.steps[i].label == label) return sum.results.at(i).verdict.reason;
+    return {};
+  }
+};
+
+Checked check_text(const std::string& body) {
+  Checked c{dc::parse_derivation(dc::SourceText{"integrals.dc", body}), {}};
+  c.sum = dc::check_derivation(c.d);
+  return c;
+}
+
+const std::string kHeader =
+    "symbol x, y, L, A, B : positive [1]\n"
+    "function psi(x) : real [1]\n"
+    "norm: integral(psi(x)^2, x, 0, L) = 1\n    by given\n";
+
+}  // namespace
+
+TEST_CASE("a normalisation integral is a quantity the references determine", "[integrals][functions]") {
+  using K = dc::VerdictKind;
+  Checked c = check_text(kHeader +
+                         "twice: 2*integral(psi(x)^2, x, 0, L) = 2\n    by rewrite norm\n"
+                         "scaled: integral(A^2*psi(x)^2, x, 0, L) = A^2\n    by rewrite norm\n"
+                         "renamed: integral(psi(y)^2, y, 0, L) = 1\n    by rewrite norm\n"
+                         "split: integral(psi(x)^2 + x, x, 0, L) = 1 + L^2/2\n    by rewrite norm\n"
+                         "wrong: integral(A^2*psi(x)^2, x, 0, L) = 2*A^2\n    by rewrite norm\n"
+                         "wrong_split: integral(psi(x)^2 + x, x, 0, L) = 1 + L^2\n    by rewrite norm\n");
+  CHECK(c.at("twice") == K::Proved);
+  CHECK(c.at("scaled") == K::Proved);
+  CHECK(c.at("renamed") == K::Proved);
+  CHECK(c.at("split") == K::Proved);
+  // with the integral eliminated, what is left is an ordinary false equation
+  CHECK(c.at("wrong") == K::Refuted);
+  CHECK(c.at("wrong_split") == K::Refuted);
+}
+
+TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule", "[integrals][functions]") {
+  using K = dc::VerdictKind;
+  Checked c = check_text(kHeader +
+                         "upper: diff(integral(psi(x)^2, x, 0, L), L) = psi(L)^2\n    by rewrite\n"
+                         "param: diff(integral(A*x*psi(x), x, 0, L), A) = integral(x*psi(x), x, 0, L)\n    by rewrite\n"
+                         "const: diff(integral(psi(x)^2, x, 0, L), A) = 0\n    by rewrite\n"
+                         "ftc: integral(diff(psi(x), x), x, 0, L) = psi(L) - psi(0)\n    by rewrite\n"
+                         "ftc2_wrong: integral(diff(psi(x), x, 2), x, 0, L) = diff(psi(L), L)\n    by rewrite\n"
+                         "ftc_wrong: integral(diff(psi(x), x), x, 0, L) = psi(L) + psi(0)\n    by rewrite\n");
+  CHECK(c.at("upper") == K::Proved);
+  // the fundamental theorem for a derivative of the declared function itself
+  CHECK(c.at("ftc") == K::Proved);
+  CHECK(c.at("ftc2_wrong") == K::Refuted);   // it forgets -psi'(0)
+  CHECK(c.at("ftc_wrong") == K::Refuted);
+  CHECK(c.at("param") == K::Proved);
+  CHECK(c.at("const") == K::Proved);
+}
+
+TEST_CASE("two integrals that are related but written differently are never refuted", "[integrals][functions][soundness]") {
+  using K = dc::VerdictKind;
+  // Each of these is true for every function psi; the checker knows no change of variable or
+  // splitting of intervals, so they must stay undecided (never refuted, never proved by
+  // accident).
+  Checked c = check_text(kHeader +
+                         "mirror: integral(psi(x), x, 0, L) = integral(psi(L - x), x, 0, L)\n    by rewrite\n"
+                         "adjacent: integral(psi(x), x, 0, L) = integral(psi(x), x, 0, A) + integral(psi(x), x, A, L)\n"
+                         "    by rewrite\n"
+                         "parts: integral(x*diff(psi(x), x), x, 0, L) = L*psi(L) - integral(psi(x), x, 0, L)\n"
+                         "    by rewrite\n"
+                         "named: B = integral(psi(x), x, 0, L)\n    by given\n"
+                         "via_ref: B = integral(psi(L - x), x, 0, L)\n    by rewrite named\n");
+  for (const char* label : {"mirror", "adjacent", "parts", "via_ref"}) {
+    CAPTURE(label);
+    CHECK(c.at(label) == K::Undecided);
+    CHECK(c.reason(label).find("relations between such integrals") != std::string::npos);
+  }
+}
