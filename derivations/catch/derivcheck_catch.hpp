@@ -1,4 +1,5 @@
-// Catch2 (v2) matchers for symbolic equality, decided by dc::prove_equal.
+// Catch2 (v2) matchers for symbolic equality, decided as `derivcheck equal` decides (the claim
+// as a one-step derivation, checked by the rule's code).
 //
 //   #include <derivcheck/catch2.hpp>      // installed package: link derivcheck::catch2
 //   // (in this repository also "derivations/catch/derivcheck_catch.hpp")
@@ -26,6 +27,7 @@
 #pragma once
 #include <map>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -138,8 +140,28 @@ struct Side {
   std::string text;
 };
 
-// Both sides in one symbol table (names matched), then prove_equal: the one decision all
-// overloads share. Input errors end up in out.error, never as an exception.
+// Does e contain a number that is not an exact rational (a float, or I)?
+inline bool has_inexact_number(const GiNaC::ex& e) {
+  if (GiNaC::is_a<GiNaC::numeric>(e)) return !GiNaC::ex_to<GiNaC::numeric>(e).is_rational();
+  for (std::size_t i = 0; i < e.nops(); ++i)
+    if (has_inexact_number(e.op(i))) return true;
+  return false;
+}
+
+// e as the derivation-syntax tree it prints as, when that reads back as e exactly; nullopt
+// otherwise.
+inline std::optional<Node> as_syntax(const GiNaC::ex& e, const SymbolTable& table, const char* file) {
+  if (has_inexact_number(e)) return std::nullopt;
+  try {
+    Node n = parse_expression(print_text(e, table), SourcePos{file, 1, 1});
+    if ((to_ginac(n, table) - e).is_zero()) return n;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
+// Both sides in one symbol table (names matched), then the check of `derivcheck equal`: the one
+// decision all overloads share. Input errors end up in out.error, never as an exception.
 inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, MatchOutcome& out) {
   calculus::install();
   try {
@@ -165,10 +187,20 @@ inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, 
     for (const auto& [name, sym] : syms)
       if (const SymbolInfo* info = table.find(name)) to_table[sym] = info->sym;
     const Node* text_node = nodes.data() + syms.size();
-    GiNaC::ex l = lhs.is_text ? to_ginac(*text_node++, table) : lhs.ex.subs(to_table);
-    GiNaC::ex r = rhs.is_text ? to_ginac(*text_node, table) : rhs.ex.subs(to_table);
+    const Node* lhs_node = lhs.is_text ? text_node++ : nullptr;
+    const Node* rhs_node = rhs.is_text ? text_node : nullptr;
+    GiNaC::ex l = lhs_node ? to_ginac(*lhs_node, table) : lhs.ex.subs(to_table);
+    GiNaC::ex r = rhs_node ? to_ginac(*rhs_node, table) : rhs.ex.subs(to_table);
     out.rhs_text = print_text(r, table);
-    out.verdict = prove_equal(l, r, table);
+    // The claim goes the road of `derivcheck equal` and of a one-step derivation (the rule's
+    // code), so a matcher and `derivcheck equal` cannot disagree. An expression side goes as
+    // the derivation-syntax text it prints as, when that text reads back as the same
+    // expression; one that does not (a float, a GiNaC function the syntax has no name for) is
+    // decided by prove_equal directly.
+    std::optional<Node> lhs_read = lhs_node ? std::optional<Node>(*lhs_node) : as_syntax(l, table, "<lhs>");
+    std::optional<Node> rhs_read = rhs_node ? std::optional<Node>(*rhs_node) : as_syntax(r, table, "<rhs>");
+    if (lhs_read && rhs_read) out.verdict = check_equal_in(table, *lhs_read, *rhs_read);
+    else out.verdict = prove_equal(l, r, table);
     return out.verdict.holds();
   } catch (const InputError& e) {
     out.error = e.format();
@@ -180,7 +212,7 @@ inline bool decide(const Side& lhs, const Side& rhs, const std::string& assume, 
 
 }  // namespace detail
 
-// lhs == rhs, decided by prove_equal under the assumptions. lhs and rhs are each a GiNaC::ex
+// lhs == rhs under the assumptions, decided as `derivcheck equal` decides. lhs and rhs are each a GiNaC::ex
 // (or anything convertible: a symbol, a number) or a string in the derivation-file syntax.
 // A MatcherBase<GiNaC::ex>, so it composes with && || ! for expression arguments.
 class EqualsSymbolicallyMatcher : public Catch::MatcherBase<GiNaC::ex> {

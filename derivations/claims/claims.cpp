@@ -266,19 +266,23 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
   } catch (const InputError& e) {
     throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
   }
+  try {
+    return check_equal_in(table, l, r, opt);
+  } catch (const InputError& e) {
+    throw quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
+  }
+}
+
+Verdict check_equal_in(const SymbolTable& table, const Node& l, const Node& r, const ProveOptions& opt) {
+  calculus::install();
   // The claim is the step `lhs = rhs` (claim_steps.hpp), checked by the rule's code.
   const Derivation d = claims::equal_derivation("<equal>", table, l, r);
   const StepResult res = claims::check_last_step(d, opt);
   if (res.errors.empty()) return res.verdict;
   // The step could not be checked. A side that does not convert is reported at that side, as
   // its conversion reports it (a limit(...) without a value leaves the claim undecided).
-  auto at_field = [&](const InputError& e) {
-    return quoted(e, e.pos().file == "<lhs>" ? lhs : e.pos().file == "<rhs>" ? rhs : assume);
-  };
   if (!claims::contains_integral(l) && !claims::contains_integral(r)) try {
       for (const Node* side : {&l, &r}) (void)to_ginac(*side, table);
-    } catch (const InputError& e) {
-      throw at_field(e);
     } catch (const UndecidedLimit& e) {
       Verdict v;
       v.kind = VerdictKind::Undecided;
@@ -286,7 +290,7 @@ Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::s
       v.reason = e.what();
       return v;
     }
-  throw at_field(res.errors.front());
+  throw res.errors.front();
 }
 
 // --- the claim bank ----------------------------------------------------------------------

@@ -48,6 +48,9 @@ SymbolTable claim_table(const std::vector<const Node*>& exprs, const std::map<st
 // the .dc rules (derivations/claims/internal/claim_steps.hpp).
 Verdict check_equal(const std::string& lhs, const std::string& rhs, const std::string& assume,
                     const ProveOptions& opt = {});
+// The same check on sides already read into `table` (the Catch2 matchers). Throws InputError
+// when a side cannot be checked (the error's position is in the side it comes from).
+Verdict check_equal_in(const SymbolTable& table, const Node& lhs, const Node& rhs, const ProveOptions& opt = {});
 
 // One line of a claim bank. Never throws: a malformed line gives a result with "error". Each
 // kind of claim is checked as the one-step derivation of internal/claim_steps.hpp.
