@@ -41,19 +41,8 @@ Verdict substitute(StepContext& c, const Relation& claim) {
       auto e = c.equations(a);
       eqs.insert(eqs.end(), e.begin(), e.end());
     }
-  if (cs.size() >= 2) {
-    c.res.derived = c.text(cs.front()) + " = " + c.text(cs.back());
-    // Substituting into C can leave an identity (C itself substituted into C): say so, rather
-    // than show a line that reads as if it were evidence against the claim.
-    bool identity = false;
-    try {
-      identity = GiNaC::normal(cs.front() - cs.back()).is_zero();
-    } catch (const std::exception&) {
-    }
-    if (identity) c.res.derived += ", an identity: nothing is derived from '" + into.label + "' by this substitution";
-  } else if (!cs.empty()) {
-    c.res.derived = c.text(cs.front());
-  }
+  if (cs.size() >= 2) c.res.derived = c.text(cs.front()) + " = " + c.text(cs.back());
+  else if (!cs.empty()) c.res.derived = c.text(cs.front());
 
   std::vector<ex> sd = c.sides(claim);
   if (cs.size() < 2) {
@@ -64,7 +53,15 @@ Verdict substitute(StepContext& c, const Relation& claim) {
     return v;
   }
   if (sd.size() < 2) c.fail(c.s.claim_pos, "expected an equation as the claim of 'by substitute'");
-  return links_follow(c, sd, eqs, "substitute");
+  Verdict v = links_follow(c, sd, eqs, "substitute");
+  // Substituting into C can leave an identity (C itself substituted into C). When the claim
+  // does not follow, say so, rather than show a line that reads as evidence against the claim.
+  if (!v.holds()) try {
+      if (GiNaC::normal(cs.front() - cs.back()).is_zero())
+        c.res.derived += ", an identity: nothing is derived from '" + into.label + "' by this substitution";
+    } catch (const std::exception&) {
+    }
+  return v;
 }
 
 }  // namespace dc::rules
