@@ -97,10 +97,15 @@ std::string join(const std::vector<std::string>& xs) {
 
 // Words in the prose before a display that announce a regime or a law: the row may hold only
 // there, so the search's counterexample is no evidence against the author.
-bool prose_names_a_regime(const std::string& hint) {
+bool prose_names_a_regime(const std::string& hint, bool operations) {
   // whole words (a stem where its forms all say it: neglect, neglecting, neglected)
   static const char* const kStems[] = {"assum", "suppos", "approx", "neglect", "negligib", "ignor", "estimat",
-                                       "integrat", "differentiat", "lineari", "expan", "\\gg", "\\ll"};
+                                       "lineari", "expan", "\\gg", "\\ll"};
+  // operations on an equation the search does not follow (integrating it, differentiating it)
+  static const char* const kOperations[] = {"integrat", "differentiat"};
+  if (operations)
+    for (const char* w : kOperations)
+      if (hint.find(w) != std::string::npos) return true;
   static const char* const kWords[] = {"small", "smaller", "large", "larger", "infinite", "infinity", "much",
                                        "limit", "limiting", "tend", "tends", "tending", "roughly", "solution",
                                        "series", "expand"};
@@ -137,6 +142,7 @@ StepResult Search::run() {
   // 1. an identity
   StepResult id = attempt({});
   if (id.verdict.holds() && usable(id)) return found(id, "identity", {});
+  identity_refuted_ = usable(id) && id.verdict.kind == VerdictKind::Refuted && !side_condition_only(id.verdict);
   // 2. a new name: a given
   if (row_.relation == "=" && introduces_names()) {
     // new only as rates: dv/dt where the rows before speak of the increment Delta_v (and t

@@ -281,6 +281,31 @@ std::vector<std::string> Search::own_display_givens(const std::vector<std::strin
   return out;
 }
 
+bool Search::calculus_of_constants() const {
+  // the names that are a function of a variable somewhere in the document: v for v__of_t
+  std::set<std::string> varying;
+  for (const auto& info : d_.symbols.all()) {
+    const std::size_t of = info.name.find("__of_");
+    if (of != std::string::npos) varying.insert(info.name.substr(0, of));
+    if (info.is_function) varying.insert(info.name);
+  }
+  bool ok = true, any = false;
+  for (const auto& side : s_.claim.sides)
+    walk_nodes(side, [&](const Node& x) {
+      if (x.kind != NodeKind::Call) return;
+      if (x.text == "limit") ok = false;   // a limit's regime may be stated only in words
+      if (x.text != "diff" && x.text != "integral") return;
+      any = true;
+      if (x.args.empty()) return;
+      walk_nodes(x.args[0], [&](const Node& y) {
+        if (y.kind == NodeKind::Call && y.text.find("__of_") != std::string::npos) ok = false;
+        if (y.kind == NodeKind::Symbol && (varying.count(y.text) || y.text.find("__of_") != std::string::npos)) ok = false;
+        if (y.kind == NodeKind::Call && (y.text == "diff" || y.text == "integral" || y.text == "limit")) ok = false;
+      });
+    });
+  return any && ok;
+}
+
 // Why a counterexample is no evidence against the author here ("" when it is).
 std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const {
   if (side_condition_only(r.verdict))
@@ -345,9 +370,12 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
       if (a != b && base(a) == base(b))
         return "'" + base(a) + "' varies with a variable in one of these rows and is a plain quantity in the other";
   if (!r.verdict.hint.empty()) return "the row holds under a declaration the document does not make (" + r.verdict.hint + ")";
+  // (a derivative or integral of an explicit expression in constants, d/dt ln(m_0/(m_0 - k t)),
+  // that is false read alone is a slip whatever the rows say: no name in it can vary)
   static const std::set<std::string> calculus = {"diff", "integral", "limit"};
+  const bool certain = identity_refuted_ && calculus_of_constants();
   for (const auto& side : s_.claim.sides)
-    if (has_call(side, calculus))
+    if (has_call(side, calculus) && !certain)
       return "the row takes a limit, a derivative or an integral, whose reading (which names vary, the "
              "regime) is not certain";
   // `\theta(x) = \theta_b e^{-mx}` against `\theta'' = m^2\theta` and `\theta(0) = \theta_b`: the
@@ -357,7 +385,9 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
   if (const auto odes = equations_for_applied(refs); !odes.empty())
     return odes.front().first + " is a differential equation for " + odes.front().second +
            ", and which of its solutions the row takes is fixed by conditions the text may state in words";
-  if (prose_names_a_regime(row_.hint))
+  // (an identity of explicit calculus that is false alone is no step of an operation the text
+  // names, "integrating from 0 to t we use …"; a regime it names still counts)
+  if (prose_names_a_regime(row_.hint, !certain))
     return "the text before the display names a regime or a law the search does not read";
   return "";
 }

@@ -34,7 +34,7 @@ void replace_calls(Node& n, const std::string& id, const Node& value);
 bool has_call(const Node& n, const std::set<std::string>& names);
 std::string join(const std::vector<std::string>& xs);
 // Words in the prose around a display that announce a regime or a law.
-bool prose_names_a_regime(const std::string& hint);
+bool prose_names_a_regime(const std::string& hint, bool operations = true);
 
 class Search {
  public:
@@ -208,6 +208,12 @@ class Search {
   std::vector<std::string> tried_;
   std::string voided_;   // the first proof voided by a row that may be a slip, for the reason
   bool nested_ = false;
+  // The row is false read alone, as an identity (a certified counterexample that is no
+  // side-condition difference): what its calculus means then does not depend on the rows.
+  bool identity_refuted_ = false;
+  // Every derivative and integral of the row is of an explicit expression: no name in it
+  // applies a function or is a function of a variable anywhere in the document.
+  bool calculus_of_constants() const;
   // The rules tried so far (a nested search counts into its parent's). Past kMaxWork the
   // search tries nothing more that could prove, and a counterexample it has not finished
   // checking is no evidence: a count, not a clock, so the verdict is the same on any machine

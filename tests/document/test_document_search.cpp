@@ -293,3 +293,27 @@ TEST_CASE("document search: an equation the text discards is not a given") {
   for (const auto& r : pin) given = given || (r.line == 1 && r.verdict == "premise");
   CHECK(given);
 }
+
+TEST_CASE("document search: a derivative of constants that is false alone is a slip, whatever the text around it") {
+  // The display names an operation ("differentiating"), and the row takes a derivative: both
+  // kept a counterexample from refuting. When the row is false read alone and nothing in its
+  // derivative can vary, neither is a reason to doubt it.
+  const std::string before = "The tank drains at the steady rate $q$, so $M = M_0 - q t$.\n"       // 1
+                             "\n"
+                             "Differentiating the logarithm of the mass ratio we use\n"              // 3
+                             "\n";
+  auto slip = check(before + "$$\\frac{d}{dt} \\ln\\frac{M_0}{M_0 - q t} = -\\frac{q}{M_0 - q t}$$\n");
+  CHECK(at(slip, 5).verdict == "refuted");
+  auto right = check(before + "$$\\frac{d}{dt} \\ln\\frac{M_0}{M_0 - q t} = \\frac{q}{M_0 - q t}$$\n");
+  CHECK(at(right, 5).verdict != "refuted");   // (the log's condition M_0/(M_0 - q t) > 0 is not declared)
+  // a name the document makes a function of t (dM/dt elsewhere) may vary inside the derivative
+  auto varying = check("The mass changes: $\\frac{dM}{dt} = -q$.\n"
+                       "\n"
+                       "$$\\frac{d}{dt} (M u) = M \\frac{du}{dt} + q u$$\n");
+  CHECK(at(varying, 3).verdict != "refuted");
+  // a regime the text names still withholds it: the row may be an approximation written with =
+  auto regime = check("For small $q t$ compared with $M_0$ we may write\n"
+                      "\n"
+                      "$$\\frac{d}{dt} \\ln\\frac{M_0}{M_0 - q t} = \\frac{q}{M_0}$$\n");
+  CHECK(at(regime, 3).verdict != "refuted");
+}
