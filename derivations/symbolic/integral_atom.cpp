@@ -157,6 +157,38 @@ std::optional<ex> lower_derivative(const ex& g, const ex& t) {
   return F;
 }
 
+// g = q(f(t)) * d/dt f(t) for a declared function f applied to t itself and q a polynomial:
+// the value Q(f(b)) - Q(f(a)) with Q' = q, exactly (a polynomial is continuous everywhere, so
+// the substitution u = f(t) needs nothing more of f than the smoothness declared functions
+// have). nullopt otherwise.
+std::optional<ex> polynomial_of_function_times_derivative(const ex& g, const ex& t, const ex& a, const ex& b) {
+  std::vector<ex> factors;
+  if (GiNaC::is_a<GiNaC::mul>(g))
+    for (std::size_t i = 0; i < g.nops(); ++i) factors.push_back(g.op(i));
+  else
+    factors.push_back(g);
+  for (std::size_t k = 0; k < factors.size(); ++k) {
+    const ex& d = factors[k];
+    if (!GiNaC::is_a<GiNaC::fderivative>(d) || pool_derivative_order(d) != 1 || d.nops() != 1 || !d.op(0).is_equal(t))
+      continue;
+    const ex f = apply_pool_function(pool_function_index(d), t);
+    const GiNaC::symbol u("substituted_function_value");
+    ex q = 1;
+    for (std::size_t i = 0; i < factors.size(); ++i)
+      if (i != k) q *= factors[i];
+    q = q.subs(GiNaC::exmap{{f, u}}, GiNaC::subs_options::no_pattern);
+    if (q.has(t) || !q.is_polynomial(u)) continue;
+    const ex fa = f.subs(GiNaC::exmap{{t, a}}, GiNaC::subs_options::no_pattern);
+    const ex fb = f.subs(GiNaC::exmap{{t, b}}, GiNaC::subs_options::no_pattern);
+    const ex v = GiNaC::integral(u, fa, fb, q).eval_integ();
+    bool residual = false;
+    for (GiNaC::const_preorder_iterator it = v.preorder_begin(); it != v.preorder_end(); ++it)
+      residual = residual || GiNaC::is_a<GiNaC::integral>(*it);
+    if (!residual && !v.has(u)) return v;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool integrand_applies_function(const ex& f, const ex& t) {
@@ -202,6 +234,11 @@ ex integral_quantity(const IntegralSpec& s, const std::function<ex(const ex&)>& 
       out += gc.second * value;
       continue;
     }
+    if (!s.a_inf && !s.b_inf)
+      if (auto v = polynomial_of_function_times_derivative(gc.first, s.t, s.a, s.b)) {
+        out += gc.second * *v;
+        continue;
+      }
     try {
       value = rest(gc.first);
     } catch (const std::exception&) {

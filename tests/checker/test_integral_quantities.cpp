@@ -66,12 +66,20 @@ TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule
                          "const: diff(integral(psi(x)^2, x, 0, L), A) = 0\n    by rewrite\n"
                          "ftc: integral(diff(psi(x), x), x, 0, L) = psi(L) - psi(0)\n    by rewrite\n"
                          "ftc2_wrong: integral(diff(psi(x), x, 2), x, 0, L) = diff(psi(L), L)\n    by rewrite\n"
-                         "ftc_wrong: integral(diff(psi(x), x), x, 0, L) = psi(L) + psi(0)\n    by rewrite\n");
+                         "ftc_wrong: integral(diff(psi(x), x), x, 0, L) = psi(L) + psi(0)\n    by rewrite\n"
+                         "square: integral(psi(x)*diff(psi(x), x), x, 0, L) = psi(L)^2/2 - psi(0)^2/2\n    by rewrite\n"
+                         "cube: integral(A*(psi(x)^2 + 1)*diff(psi(x), x), x, 0, L) = A*(psi(L)^3/3 + psi(L) - psi(0)^3/3 - psi(0))\n"
+                         "    by rewrite\n"
+                         "square_wrong: integral(psi(x)*diff(psi(x), x), x, 0, L) = psi(L)^2 - psi(0)^2\n    by rewrite\n");
   CHECK(c.at("upper") == K::Proved);
   // the fundamental theorem for a derivative of the declared function itself
   CHECK(c.at("ftc") == K::Proved);
   CHECK(c.at("ftc2_wrong") == K::Refuted);   // it forgets -psi'(0)
   CHECK(c.at("ftc_wrong") == K::Refuted);
+  // a polynomial of the function times its derivative: the substitution u = psi(x)
+  CHECK(c.at("square") == K::Proved);
+  CHECK(c.at("cube") == K::Proved);
+  CHECK(c.at("square_wrong") == K::Refuted);
   CHECK(c.at("param") == K::Proved);
   CHECK(c.at("const") == K::Proved);
 }
