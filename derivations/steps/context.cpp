@@ -112,7 +112,73 @@ void StepContext::fail(const SourcePos& p, const std::string& msg, int len) cons
 
 std::string StepContext::text(const ex& e) const { return print_text(e, d.symbols); }
 
-ex StepContext::conv(const Node& n) const { return resolved_ginac(d, n); }
+ex StepContext::conv(const Node& n) const {
+  if (antiderivatives().empty()) return resolved_ginac(d, n);
+  return resolved_ginac(d, instantiated(n));
+}
+
+namespace {
+bool is_indefinite_integral(const Node& n) { return n.kind == NodeKind::Call && n.text == "integral" && n.args.size() == 2; }
+}  // namespace
+
+bool StepContext::is_antiderivative(const RuleArg& a) const {
+  if (a.kind != RuleArg::Kind::Label) return false;
+  for (const auto& ad : antiderivatives())
+    if (ad.label == a.label) return true;
+  return false;
+}
+
+const std::vector<StepContext::Antiderivative>& StepContext::antiderivatives() const {
+  if (antiderivatives_) return *antiderivatives_;
+  antiderivatives_.emplace();
+  for (const auto* group : {&s.rule.refs, &s.rule.into, &s.rule.with})
+    for (const auto& a : *group) {
+      if (a.kind != RuleArg::Kind::Label) continue;
+      const Step* st = d.find(a.label);
+      if (!st) continue;
+      const Relation& r = claim_of(*st);
+      if (r.sides.size() != 2 || !is_indefinite_integral(r.sides[0])) continue;
+      const Node& f = r.sides[0].args[0];
+      const Node& x = r.sides[0].args[1];
+      if (x.kind != NodeKind::Symbol) continue;
+      try {
+        // F' = f on the whole line, x a fresh real variable: the cited step was checked on x's
+        // declared domain only (with x in [0, 1], x^2/2 is an antiderivative of sqrt(x^2),
+        // which would make the integral of sqrt(t^2) from -1 to 1 zero)
+        const SymbolTable bound = d.symbols.with_bound_variable(x.text);
+        const ex xs = bound.find(x.text)->sym;
+        Antiderivative ad{a.label, r.sides[1], x, to_ginac(f, bound), xs, to_ginac(r.sides[1], bound)};
+        if (!GiNaC::is_a<GiNaC::symbol>(xs) || !continuous_everywhere(ad.Fe, GiNaC::ex_to<GiNaC::symbol>(xs)))
+          continue;
+        if (!prove_equal(ad.Fe.diff(GiNaC::ex_to<GiNaC::symbol>(xs)), ad.f, bound, opt).holds()) continue;
+        antiderivatives_->push_back(std::move(ad));
+      } catch (const std::exception&) {
+      }
+    }
+  return *antiderivatives_;
+}
+
+// n with each definite integral of a cited antiderivative's integrand replaced by the bar
+// eval_between(F, x, a, b).
+Node StepContext::instantiated(const Node& n) const {
+  if (n.kind == NodeKind::Call && n.text == "integral" && n.args.size() == 4) {
+    try {
+      const Integrand in = integrand_of(n, d.symbols);
+      for (const auto& ad : antiderivatives()) {
+        const ex diff = ad.f.subs(GiNaC::exmap{{ad.xs, in.x}}, GiNaC::subs_options::no_pattern) - in.f;
+        if (!diff.is_zero() && !diff.expand().is_zero()) continue;
+        Node bar = n;
+        bar.text = "eval_between";
+        bar.args = {ad.F, ad.x, instantiated(n.args[2]), instantiated(n.args[3])};
+        return bar;
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  Node out = n;
+  for (auto& a : out.args) a = instantiated(a);
+  return out;
+}
 
 std::vector<ex> StepContext::sides(const Relation& r) const {
   std::vector<ex> out;
@@ -135,6 +201,7 @@ const Step& StepContext::ref_step(const RuleArg& a) const {
 const Relation& claim_of(const Step& st) { return st.erratum ? st.erratum->corrected : st.claim; }
 
 std::vector<Eq> StepContext::equations(const RuleArg& a) const {
+  if (is_antiderivative(a)) return {};   // instantiated where its integrand is integrated (conv)
   const Relation* r;
   std::string from;
   if (a.kind == RuleArg::Kind::Label) {
@@ -189,6 +256,7 @@ Substitutions StepContext::substitutions(const std::vector<RuleArg>& args, std::
                                          std::vector<std::string>* labels) const {
   Substitutions out;
   for (const auto& a : args) {
+    if (is_antiderivative(a)) continue;   // instantiated where its integrand is integrated (conv)
     std::size_t n = out.size();
     const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
     if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);

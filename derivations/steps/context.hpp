@@ -3,6 +3,7 @@
 // the step cannot be checked as written.
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,6 +80,21 @@ struct StepContext {
   Atomizer atoms;
   std::map<ex, bool, GiNaC::ex_is_less> nonzero_cache;   // see nonzero_coefficient (elimination.hpp)
 
+
+  // A cited step `integral(f, x) = F` (an antiderivative, which the `integrate` rule checks by
+  // differentiation) is no equation between values: it is instantiated. Every definite
+  // integral of f between a and b in what this step converts becomes F(b) - F(a)
+  // (`eval_between(F, x, a, b)`), where F is continuous on the whole line (so the fundamental
+  // theorem holds between any limits); an indefinite integral is never replaced by F as a
+  // value (two antiderivatives differ by a constant).
+  struct Antiderivative {
+    std::string label;
+    Node F, x;       // as written
+    ex f, xs, Fe;    // the integrand and F in the declared variable xs
+  };
+  const std::vector<Antiderivative>& antiderivatives() const;
+  bool is_antiderivative(const RuleArg& a) const;
+
   const RuleSpec& rule() const { return s.rule; }
   [[noreturn]] void fail(const SourcePos& p, const std::string& msg, int len = 1) const;
   std::string text(const ex& e) const;
@@ -100,6 +116,10 @@ struct StepContext {
   std::vector<ex> symbols_in(const std::vector<ex>& es) const;
   int declaration_index(const ex& s) const;
   bool real_domain(const ex& s) const;
+
+ private:
+  mutable std::optional<std::vector<Antiderivative>> antiderivatives_;
+  Node instantiated(const Node& n) const;
 };
 
 // Names that are functions of t by a cited step: a `definition` whose value contains t

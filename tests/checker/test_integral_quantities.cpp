@@ -103,3 +103,42 @@ TEST_CASE("two integrals that are related but written differently are never refu
     CHECK(c.reason(label).find("relations between such integrals") != std::string::npos);
   }
 }
+
+TEST_CASE("a cited antiderivative is instantiated as F(b) - F(a), never used as a value", "[integrals][antiderivative]") {
+  using K = dc::VerdictKind;
+  // (1 + 2x^2) e^(x^2) has the antiderivative x e^(x^2), which the integral rules do not find:
+  // the author's own, checked by differentiation, makes the definite integral usable
+  Checked c = check_text(
+      "symbol x, L, W : positive [1]\n"
+      "anti: integral((1 + 2*x^2)*exp(x^2), x) = x*exp(x^2)\n    by integrate\n"
+      "work: W = integral((1 + 2*x^2)*exp(x^2), x, 0, L)\n    by given\n"
+      "cited: W = L*exp(L^2)\n    by substitute anti into work\n"
+      "cited_wrong: W = L*exp(L^2) + 1\n    by substitute anti into work\n"
+      "scaled: 3*integral((1 + 2*x^2)*exp(x^2), x, 0, L) = 3*L*exp(L^2)\n    by rewrite anti\n"
+      "uncited: integral((1 + 2*x^2)*exp(x^2), x, 0, L) + 1 = L*exp(L^2) + 1\n    by rewrite\n");
+  CHECK(c.at("cited") == K::Proved);
+  CHECK(c.at("cited_wrong") == K::Refuted);
+  CHECK(c.at("scaled") == K::Proved);
+  CHECK(c.at("uncited") == K::Undecided);   // without the citation: no antiderivative found
+
+  // two true antiderivatives differ by a constant: citing both proves nothing about F itself
+  Checked k = check_text(
+      "symbol y : real [1]\n"
+      "a1: integral(cos(y), y) = sin(y)\n    by integrate\n"
+      "a2: integral(cos(y), y) = sin(y) + 1\n    by integrate\n"
+      "bogus: sin(y) = sin(y) + 1\n    by rewrite a1, a2\n");
+  CHECK(k.at("a1") == K::Proved);
+  CHECK(k.at("a2") == K::Proved);
+  CHECK(k.at("bogus") == K::Refuted);
+
+  // an antiderivative checked on the declared domain only (x in [0, 1]: x^2/2 for sqrt(x^2)) is
+  // not one on the whole line, so it says nothing about the integral from -1 to 1 (which is 1)
+  Checked d = check_text(
+      "symbol x : in [0, 1] [1]\n"
+      "symbol y : real [1]\n"
+      "anti: integral(sqrt(x^2), x) = x^2/2\n    by integrate\n"
+      "zero: integral(sqrt(y^2), y, -1, 1) = 0\n    by rewrite anti\n");
+  CHECK(d.at("anti") != K::Refuted);
+  CHECK(d.at("zero") != K::Proved);
+  CHECK(d.at("zero") != K::HoldsNumerically);
+}
