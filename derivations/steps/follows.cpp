@@ -205,6 +205,8 @@ static std::string pinned_product(StepContext& c, const Reduction& red, const ex
     }
   };
   auto zero = [](const ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return e.is_zero();
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return false;
     try {
       return GiNaC::normal(e).is_zero();
     } catch (const std::exception&) {
@@ -219,12 +221,16 @@ static std::string pinned_product(StepContext& c, const Reduction& red, const ex
          GiNaC::is_a<GiNaC::numeric>(el.value_then)) ||
         (el.factor_of_zero && (claim_is(el.var) || claim_is(el.product))))
       written[el.var] = el.value_then;
+  // (the cheap tests first: claim_is and zero normalise)
   for (const auto& el : red.eliminated) {
-    if (claim_is(el.var) || (el.factor_of_zero && claim_is(el.product))) continue;
-    if (el.factor_of_zero) return c.text(c.atoms.restore(el.product)) + " = 0";
+    if (el.factor_of_zero) {
+      if (claim_is(el.var) || claim_is(el.product)) continue;
+      return c.text(c.atoms.restore(el.product)) + " = 0";
+    }
     // (a symbol only: a derivative that the references make zero, E'(t) = 0 from Newton's
     // law, is what they say, not a component)
     if (written.count(el.var) || !GiNaC::is_a<GiNaC::symbol>(c.atoms.restore(el.var)) || !zero(el.value)) continue;
+    if (claim_is(el.var)) continue;
     if (!zero(el.value_then.subs(written, GiNaC::subs_options::no_pattern)))
       return c.text(c.atoms.restore(el.var)) + " = 0";
   }
