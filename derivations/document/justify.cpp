@@ -31,7 +31,7 @@ namespace document_detail {
 
 void names_of(const Node& n, std::set<std::string>& out) {
   if (n.kind == NodeKind::Symbol && !is_reserved_name(n.text)) out.insert(n.text);
-  if (n.kind == NodeKind::Call && !is_builtin_function(n.text)) out.insert(n.text);
+  if (n.kind == NodeKind::Call && !is_reserved_name(n.text)) out.insert(n.text);
   for (const auto& a : n.args) names_of(a, out);
 }
 

@@ -331,6 +331,13 @@ Relation DcReader::relation(const Span& s, std::size_t b, std::size_t e, const s
 // limit engine cannot decide is not an input error: the step that uses it is undecided when
 // it is checked, and the rest of the file is read.
 void DcReader::validate(const Node& n) {
+  if (has_plus_minus(n) && plus_minus_sign() == 0) {   // both values of a ±
+    for (int sign : {1, -1}) {
+      PlusMinusSign chosen(sign);
+      validate(n);
+    }
+    return;
+  }
   try {
     (void)to_ginac(n, d_.symbols);
   } catch (const UndecidedLimit&) {

@@ -86,6 +86,7 @@ class Writer {
 
   // Binds like an atom when juxtaposed (no parentheses needed as a factor).
   static bool needs_group_as_factor(const Node& f, bool first) {
+    if (is_call(f, "pm") || is_call(f, "mp")) return f.args.size() == 2 || !first;   // (a \pm b) c
     switch (f.kind) {
       case NodeKind::Add:
       case NodeKind::Sub: return true;
@@ -295,6 +296,14 @@ class Writer {
 
   std::string call(const Node& n) {
     const std::string& f = n.text;
+    if ((f == "pm" || f == "mp") && (n.args.size() == 1 || n.args.size() == 2)) {   // a \pm b, \mp b
+      const std::string sign = f == "pm" ? "\\pm " : "\\mp ";
+      const Node& r = n.args.back();
+      const bool need = r.kind == NodeKind::Add || r.kind == NodeKind::Sub || r.kind == NodeKind::Neg || is_call(r, "pm") ||
+                        is_call(r, "mp");
+      if (n.args.size() == 1) return sign + operand(r, need);
+      return operand(n.args[0], false) + " " + sign + operand(r, need);
+    }
     if (f == "sqrt" && n.args.size() == 1) return "\\sqrt{" + top(n.args[0]) + "}";
     if (f == "exp" && n.args.size() == 1) return "\\mathrm{e}^{" + inline_term(n.args[0]) + "}";
     if (f == "abs" && n.args.size() == 1) return "\\left|" + top(n.args[0]) + "\\right|";

@@ -11,6 +11,7 @@
 #include "derivations/steps/context.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/rules/in_domain.hpp"
+#include "derivations/rules/plus_minus.hpp"
 
 namespace dc {
 
@@ -141,7 +142,22 @@ void check_stable_form(const Derivation& d, const Step& s, const ProveOptions& o
 
 }  // namespace
 
+namespace {
+StepResult check_one_sign(const Derivation& d, const Step& s, const ProveOptions& opt);
+}  // namespace
+
 StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& opt) {
+  if (plus_minus_sign() == 0 && rules::mentions_plus_minus(d, s)) {
+    auto t0 = std::chrono::steady_clock::now();
+    StepResult r = rules::check_both_signs(d, s, opt, check_one_sign);
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  }
+  return check_one_sign(d, s, opt);
+}
+
+namespace {
+StepResult check_one_sign(const Derivation& d, const Step& s, const ProveOptions& opt) {
   auto t0 = std::chrono::steady_clock::now();
   StepResult res;
   res.step = &s;
@@ -205,6 +221,7 @@ StepResult check_step(const Derivation& d, const Step& s, const ProveOptions& op
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
+}  // namespace
 
 int CheckSummary::exit_code(bool strict) const {
   if (input_errors > 0) return kExitInputError;

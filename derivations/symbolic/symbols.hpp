@@ -124,6 +124,24 @@ struct UndecidedLimit : std::runtime_error {
 // method applies (polynomial integrand, proved antiderivative), else UndecidedLimit.
 GiNaC::ex to_ginac(const Node& n, const SymbolTable& table);
 
+// `a ± b` (the call pm(a, b); `a ∓ b` is mp(a, b), `±b` pm(b)) has two values. to_ginac reads
+// it with the sign chosen here: +1 (± as +, ∓ as -), -1, or 0, none chosen, where a '±' is an
+// input error. A step with ± is checked once for each sign (rules/plus_minus.hpp), and a reader
+// validates it both ways.
+int plus_minus_sign();
+class PlusMinusSign {
+ public:
+  explicit PlusMinusSign(int sign);
+  ~PlusMinusSign();
+  PlusMinusSign(const PlusMinusSign&) = delete;
+  PlusMinusSign& operator=(const PlusMinusSign&) = delete;
+
+ private:
+  int saved_;
+};
+// Does n contain a ± or ∓?
+bool has_plus_minus(const Node& n);
+
 // The integrand of integral(f, x, a, b), converted with x as a fresh real variable of
 // integration (SymbolTable::with_bound_variable): the dummy variable ranges over (a, b), not
 // over what is declared of the quantity of the same name. `x` is that fresh symbol and `table`

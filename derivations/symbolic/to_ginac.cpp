@@ -450,6 +450,17 @@ class Converter {
 
   GiNaC::ex call(const Node& n) {
     const std::string& f = n.text;
+    if (f == "pm" || f == "mp") {
+      check_count(n, 1, 2, "1 or 2 arguments");
+      const int chosen = plus_minus_sign();
+      if (chosen == 0)
+        throw InputError(n.pos, std::string("'") + (f == "pm" ? "\u00B1" : "\u2213") +
+                                    "' has two values here; only a step's check reads it, once with each sign", n.length);
+      const int sign = f == "pm" ? chosen : -chosen;
+      const GiNaC::ex b = conv(n.args.back());
+      const GiNaC::ex a = n.args.size() == 2 ? conv(n.args[0]) : GiNaC::ex(0);
+      return sign > 0 ? a + b : a - b;
+    }
     if (one_arg_builtin(f)) {
       check_count(n, 1, 1, "1 argument");
       GiNaC::ex a = conv(n.args[0]);
@@ -688,6 +699,12 @@ class Dimensioner {
 
   Dimension call(const Node& n) {
     const std::string& f = n.text;
+    if ((f == "pm" || f == "mp") && (n.args.size() == 1 || n.args.size() == 2)) {   // as a + b, or -b
+      Node as = n;
+      as.kind = n.args.size() == 2 ? NodeKind::Add : NodeKind::Neg;
+      as.text.clear();
+      return dim(as);
+    }
     if (one_arg_builtin(f)) {
       check_count(n, 1, 1, "1 argument");
       if (f == "sqrt") {

@@ -24,7 +24,7 @@ namespace {
 
 constexpr int kHardMaxDepth = 1000;
 
-enum class Tok { Number, Ident, Plus, Minus, Star, Slash, Caret, LParen, RParen, Comma, Equals, Degree, End };
+enum class Tok { Number, Ident, Plus, Minus, PlusMinus, MinusPlus, Star, Slash, Caret, LParen, RParen, Comma, Equals, Degree, End };
 
 struct Token {
   Tok kind = Tok::End;
@@ -105,6 +105,18 @@ class Lexer {
         while (j < n && is_ident_char(text_[j])) ++j;
         t.kind = Tok::Ident;
         t.end = j;
+      } else if ((c == '\xC2' && i + 1 < n && text_[i + 1] == '\xB1') ||
+                 (c == '\xE2' && i + 2 < n && text_[i + 1] == '\x88' && text_[i + 2] == '\x93') ||
+                 ((c == '+' || c == '-') && i + 2 < n && text_[i + 1] == '/' && text_[i + 2] == (c == '+' ? '-' : '+'))) {
+        // '±' (U+00B1), '∓' (U+2213), or ASCII '+/-', '-/+': both signs, one column each
+        // for the Unicode forms
+        const bool ascii = c == '+' || c == '-';
+        t.kind = (c == '\xC2' || c == '+') ? Tok::PlusMinus : Tok::MinusPlus;
+        t.end = i + (ascii ? 3 : c == '\xC2' ? 2 : 3);
+        col += ascii ? 3 : 1;
+        i = t.end;
+        toks.push_back(t);
+        continue;
       } else if (c == '\xC2' && i + 1 < n && text_[i + 1] == '\xB0') {
         // '°' (U+00B0, two bytes in UTF-8): one column
         t.kind = Tok::Degree;
@@ -285,18 +297,27 @@ class Parser {
     return out;
   }
 
-  // sum := product ( ('+'|'-') product )*
+  static bool is_sign(Tok k) { return k == Tok::Plus || k == Tok::Minus || k == Tok::PlusMinus || k == Tok::MinusPlus; }
+
+  // sum := product ( ('+'|'-'|'±'|'∓') product )*. `a ± b` is the call pm(a, b), `a ∓ b`
+  // mp(a, b): one expression for both signs (a step with it is checked for each).
   Parsed sum() {
     Parsed left = product();
-    while (peek().kind == Tok::Plus || peek().kind == Tok::Minus) {
+    while (is_sign(peek().kind)) {
       const Token& op = next();
       const Token& t = peek();
-      if (t.kind == Tok::Plus || t.kind == Tok::Minus) {
+      if (is_sign(t.kind)) {
         std::string msg = "expected an expression after '" + std::string(text_of(op)) + "', found " + describe(t);
         if (t.kind == Tok::Minus) msg += " (put a negative term in parentheses)";
         fail(t, msg);
       }
       Parsed right = product();
+      if (op.kind == Tok::PlusMinus || op.kind == Tok::MinusPlus) {
+        left = binary(NodeKind::Add, std::move(left), std::move(right), op);
+        left.node.kind = NodeKind::Call;
+        left.node.text = op.kind == Tok::PlusMinus ? "pm" : "mp";
+        continue;
+      }
       left = binary(op.kind == Tok::Plus ? NodeKind::Add : NodeKind::Sub, std::move(left), std::move(right), op);
     }
     return left;
@@ -318,7 +339,7 @@ class Parser {
   Parsed unary() {
     std::size_t first = pos_;
     std::vector<std::size_t> signs;
-    while (peek().kind == Tok::Minus || peek().kind == Tok::Plus) {
+    while (is_sign(peek().kind)) {
       const Token& t = peek();
       if (t.kind == Tok::Plus) {
         bool at_start = pos_ == first && (pos_ == 0 || toks_[pos_ - 1].kind == Tok::LParen ||
@@ -347,6 +368,10 @@ class Parser {
       out.end = p.end;
       out.end_line = p.end_line;
       out.node.kind = NodeKind::Neg;
+      if (t.kind == Tok::PlusMinus || t.kind == Tok::MinusPlus) {   // ±x: pm(x)
+        out.node.kind = NodeKind::Call;
+        out.node.text = t.kind == Tok::PlusMinus ? "pm" : "mp";
+      }
       out.node.pos = at(t);
       out.node.args.push_back(std::move(p.node));
       out.node.length = length_of(out);
@@ -480,10 +505,14 @@ class Parser {
 
 // ---- to_text -----------------------------------------------------------------------------
 
-bool is_sum(const Node& n) { return n.kind == NodeKind::Add || n.kind == NodeKind::Sub; }
+bool is_plus_minus(const Node& n) {
+  return n.kind == NodeKind::Call && (n.text == "pm" || n.text == "mp") && n.args.size() == 2;
+}
+// (a ± b prints as a sum does, and needs the parentheses a sum needs)
+bool is_sum(const Node& n) { return n.kind == NodeKind::Add || n.kind == NodeKind::Sub || is_plus_minus(n); }
 bool is_prod(const Node& n) { return n.kind == NodeKind::Mul || n.kind == NodeKind::Div; }
 bool is_atomic(const Node& n) {
-  return n.kind == NodeKind::Number || n.kind == NodeKind::Symbol || n.kind == NodeKind::Call;
+  return n.kind == NodeKind::Number || n.kind == NodeKind::Symbol || (n.kind == NodeKind::Call && !is_plus_minus(n));
 }
 
 void emit(const Node& n, std::string& out);
@@ -504,7 +533,7 @@ void emit_chain(const Node& n, std::string& out) {
   const bool sum_chain = is_sum(n);
   std::vector<const Node*> spine;
   const Node* cur = &n;
-  while ((sum_chain ? is_sum(*cur) : is_prod(*cur)) && (cur == &n || !cur->parenthesized)) {
+  while ((sum_chain ? is_sum(*cur) && !is_plus_minus(*cur) : is_prod(*cur)) && (cur == &n || !cur->parenthesized)) {
     spine.push_back(cur);
     cur = &cur->args[0];
   }
@@ -531,6 +560,18 @@ void emit(const Node& n, std::string& out) {
       out += n.text;
       break;
     case NodeKind::Call:
+      if ((n.text == "pm" || n.text == "mp") && (n.args.size() == 1 || n.args.size() == 2)) {
+        const char* sign = n.text == "pm" ? "\u00B1" : "\u2213";
+        if (n.args.size() == 1) {
+          out += sign;
+          emit_operand(n.args[0], is_sum(n.args[0]) || n.args[0].kind == NodeKind::Neg, out);
+        } else {
+          emit_operand(n.args[0], false, out);
+          out += std::string(" ") + sign + " ";
+          emit_operand(n.args[1], is_sum(n.args[1]) || n.args[1].kind == NodeKind::Neg, out);
+        }
+        break;
+      }
       out += n.text;
       out += '(';
       for (std::size_t i = 0; i < n.args.size(); ++i) {
@@ -606,7 +647,7 @@ bool is_builtin_function(std::string_view name) {
 }
 
 bool is_reserved_name(std::string_view name) {
-  return is_builtin_function(name) || name == "pi" || name == "deg" || name == "oo";
+  return is_builtin_function(name) || name == "pi" || name == "deg" || name == "oo" || name == "pm" || name == "mp";
 }
 
 }  // namespace dc

@@ -564,7 +564,7 @@ bool Parser::starts_factor(const Token& t) const {
   TexRel rel;
   if (relation_of(t, rel)) return false;
   if (t.text == "|" || t.text == "Vert") return abs_depth_ == 0;
-  static const char* const kNot[] = {"cdot", "times", "div", "quad", "qquad", "right", "rvert", "rVert", "}", "degree", "circ", "ast"};
+  static const char* const kNot[] = {"cdot", "times", "div", "quad", "qquad", "right", "rvert", "rVert", "}", "degree", "circ", "ast", "pm", "mp"};
   for (const char* s : kNot)
     if (t.text == s) return false;
   return true;
@@ -574,13 +574,17 @@ Parsed Parser::sum() {
   Parsed left = term(false);
   while (true) {
     const Token& t = peek();
-    if (t.is_cs("pm") || t.is_cs("mp")) fail(t, "\\" + t.text + " is not read yet: write the two cases as two rows");
-    if (!(t.is('+') || t.is('-'))) break;
+    const bool both = t.is_cs("pm") || t.is_cs("mp");   // a \pm b: pm(a, b), both signs
+    if (!(t.is('+') || t.is('-') || both)) break;
     const Token& op = next();
     if (peek().is('+') || peek().is('-'))
       fail(peek(), "expected an expression after '" + op.text + "', found " + describe(peek()));
     Parsed right = term(false);
-    left = binary(op.is('+') ? NodeKind::Add : NodeKind::Sub, std::move(left), std::move(right), op);
+    left = binary(op.is('-') ? NodeKind::Sub : NodeKind::Add, std::move(left), std::move(right), op);
+    if (both) {
+      left.node.kind = NodeKind::Call;
+      left.node.text = op.is_cs("pm") ? "pm" : "mp";
+    }
   }
   return left;
 }
@@ -722,10 +726,28 @@ Parsed Parser::signed_factor() {
     enter(peek());
     signs.push_back(&next());
   }
-  if (peek().is_cs("pm") || peek().is_cs("mp"))
-    fail(peek(), "\\" + peek().text + " is not read yet: write the two cases as two rows");
+  const Token* both = nullptr;   // \pm x: pm(x)
+  if (signs.empty() && (peek().is_cs("pm") || peek().is_cs("mp"))) {
+    enter(peek());
+    both = &next();
+  }
   if (int_depth_ > 0 && differential_at(pos_)) fail(peek(), "expected an integrand before the differential");
   Parsed p = factor();
+  if (both) {
+    --nest_;
+    Parsed out;
+    out.depth = p.depth + 1;
+    if (out.depth > max_tree_depth_) fail(*both, "expression too large");
+    out.begin = both->off;
+    out.end = p.end;
+    out.end_line = p.end_line;
+    out.node.kind = NodeKind::Call;
+    out.node.text = both->is_cs("pm") ? "pm" : "mp";
+    out.node.pos = at(*both);
+    out.node.args.push_back(std::move(p.node));
+    out.node.length = length_of(out);
+    p = std::move(out);
+  }
   nest_ -= static_cast<int>(signs.size());
   for (auto it = signs.rbegin(); it != signs.rend(); ++it) {
     if ((*it)->is('+')) continue;
