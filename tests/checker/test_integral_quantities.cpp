@@ -8,30 +8,13 @@
 
 #include "derivations/reader/derivation.hpp"
 #include "derivations/rules/check.hpp"
+#include "support/checked.hpp"
 
 namespace {
 
-struct Checked {
-  dc::Derivation d;
-  dc::CheckSummary sum;
-  dc::VerdictKind at(const std::string& label) const {
-    for (std::size_t i = 0; i < d.steps.size(); ++i)
-      if (d.steps[i].label == label) return sum.results.at(i).verdict.kind;
-    FAIL("no step " << label);
-    return dc::VerdictKind::Undecided;
-  }
-  std::string reason(const std::string& label) const {
-    for (std::size_t i = 0; i < d.steps.size(); ++i)
-      if (d.steps[i].label == label) return sum.results.at(i).verdict.reason;
-    return {};
-  }
-};
+using test_support::Checked;
 
-Checked check_text(const std::string& body) {
-  Checked c{dc::parse_derivation(dc::SourceText{"integrals.dc", body}), {}};
-  c.sum = dc::check_derivation(c.d);
-  return c;
-}
+Checked check_text(const std::string& body) { return test_support::check_text(body, "integrals.dc"); }
 
 const std::string kHeader =
     "symbol x, y, L, A, B : positive [1]\n"
@@ -49,13 +32,13 @@ TEST_CASE("a normalisation integral is a quantity the references determine", "[i
                          "split: integral(psi(x)^2 + x, x, 0, L) = 1 + L^2/2\n    by rewrite norm\n"
                          "wrong: integral(A^2*psi(x)^2, x, 0, L) = 2*A^2\n    by rewrite norm\n"
                          "wrong_split: integral(psi(x)^2 + x, x, 0, L) = 1 + L^2\n    by rewrite norm\n");
-  CHECK(c.at("twice") == K::Proved);
-  CHECK(c.at("scaled") == K::Proved);
-  CHECK(c.at("renamed") == K::Proved);
-  CHECK(c.at("split") == K::Proved);
+  CHECK(c.kind("twice") == K::Proved);
+  CHECK(c.kind("scaled") == K::Proved);
+  CHECK(c.kind("renamed") == K::Proved);
+  CHECK(c.kind("split") == K::Proved);
   // with the integral eliminated, what is left is an ordinary false equation
-  CHECK(c.at("wrong") == K::Refuted);
-  CHECK(c.at("wrong_split") == K::Refuted);
+  CHECK(c.kind("wrong") == K::Refuted);
+  CHECK(c.kind("wrong_split") == K::Refuted);
 }
 
 TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule", "[integrals][functions]") {
@@ -71,17 +54,17 @@ TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule
                          "cube: integral(A*(psi(x)^2 + 1)*diff(psi(x), x), x, 0, L) = A*(psi(L)^3/3 + psi(L) - psi(0)^3/3 - psi(0))\n"
                          "    by rewrite\n"
                          "square_wrong: integral(psi(x)*diff(psi(x), x), x, 0, L) = psi(L)^2 - psi(0)^2\n    by rewrite\n");
-  CHECK(c.at("upper") == K::Proved);
+  CHECK(c.kind("upper") == K::Proved);
   // the fundamental theorem for a derivative of the declared function itself
-  CHECK(c.at("ftc") == K::Proved);
-  CHECK(c.at("ftc2_wrong") == K::Refuted);   // it forgets -psi'(0)
-  CHECK(c.at("ftc_wrong") == K::Refuted);
+  CHECK(c.kind("ftc") == K::Proved);
+  CHECK(c.kind("ftc2_wrong") == K::Refuted);   // it forgets -psi'(0)
+  CHECK(c.kind("ftc_wrong") == K::Refuted);
   // a polynomial of the function times its derivative: the substitution u = psi(x)
-  CHECK(c.at("square") == K::Proved);
-  CHECK(c.at("cube") == K::Proved);
-  CHECK(c.at("square_wrong") == K::Refuted);
-  CHECK(c.at("param") == K::Proved);
-  CHECK(c.at("const") == K::Proved);
+  CHECK(c.kind("square") == K::Proved);
+  CHECK(c.kind("cube") == K::Proved);
+  CHECK(c.kind("square_wrong") == K::Refuted);
+  CHECK(c.kind("param") == K::Proved);
+  CHECK(c.kind("const") == K::Proved);
 }
 
 TEST_CASE("two integrals that are related but written differently are never refuted", "[integrals][functions][soundness]") {
@@ -99,8 +82,8 @@ TEST_CASE("two integrals that are related but written differently are never refu
                          "via_ref: B = integral(psi(L - x), x, 0, L)\n    by rewrite named\n");
   for (const char* label : {"mirror", "adjacent", "parts", "via_ref"}) {
     CAPTURE(label);
-    CHECK(c.at(label) == K::Undecided);
-    CHECK(c.reason(label).find("relations between such integrals") != std::string::npos);
+    CHECK(c.kind(label) == K::Undecided);
+    CHECK(c.at(label).verdict.reason.find("relations between such integrals") != std::string::npos);
   }
 }
 
@@ -116,10 +99,10 @@ TEST_CASE("a cited antiderivative is instantiated as F(b) - F(a), never used as 
       "cited_wrong: W = L*exp(L^2) + 1\n    by substitute anti into work\n"
       "scaled: 3*integral((1 + 2*x^2)*exp(x^2), x, 0, L) = 3*L*exp(L^2)\n    by rewrite anti\n"
       "uncited: integral((1 + 2*x^2)*exp(x^2), x, 0, L) + 1 = L*exp(L^2) + 1\n    by rewrite\n");
-  CHECK(c.at("cited") == K::Proved);
-  CHECK(c.at("cited_wrong") == K::Refuted);
-  CHECK(c.at("scaled") == K::Proved);
-  CHECK(c.at("uncited") == K::Undecided);   // without the citation: no antiderivative found
+  CHECK(c.kind("cited") == K::Proved);
+  CHECK(c.kind("cited_wrong") == K::Refuted);
+  CHECK(c.kind("scaled") == K::Proved);
+  CHECK(c.kind("uncited") == K::Undecided);   // without the citation: no antiderivative found
 
   // two true antiderivatives differ by a constant: citing both proves nothing about F itself
   Checked k = check_text(
@@ -127,9 +110,9 @@ TEST_CASE("a cited antiderivative is instantiated as F(b) - F(a), never used as 
       "a1: integral(cos(y), y) = sin(y)\n    by integrate\n"
       "a2: integral(cos(y), y) = sin(y) + 1\n    by integrate\n"
       "bogus: sin(y) = sin(y) + 1\n    by rewrite a1, a2\n");
-  CHECK(k.at("a1") == K::Proved);
-  CHECK(k.at("a2") == K::Proved);
-  CHECK(k.at("bogus") == K::Refuted);
+  CHECK(k.kind("a1") == K::Proved);
+  CHECK(k.kind("a2") == K::Proved);
+  CHECK(k.kind("bogus") == K::Refuted);
 
   // an antiderivative checked on the declared domain only (x in [0, 1]: x^2/2 for sqrt(x^2)) is
   // not one on the whole line, so it says nothing about the integral from -1 to 1 (which is 1)
@@ -138,7 +121,7 @@ TEST_CASE("a cited antiderivative is instantiated as F(b) - F(a), never used as 
       "symbol y : real [1]\n"
       "anti: integral(sqrt(x^2), x) = x^2/2\n    by integrate\n"
       "zero: integral(sqrt(y^2), y, -1, 1) = 0\n    by rewrite anti\n");
-  CHECK(d.at("anti") != K::Refuted);
-  CHECK(d.at("zero") != K::Proved);
-  CHECK(d.at("zero") != K::HoldsNumerically);
+  CHECK(d.kind("anti") != K::Refuted);
+  CHECK(d.kind("zero") != K::Proved);
+  CHECK(d.kind("zero") != K::HoldsNumerically);
 }

@@ -7,28 +7,15 @@
 
 #include "derivations/reader/derivation.hpp"
 #include "derivations/rules/check.hpp"
+#include "support/checked.hpp"
 #include "derivations/symbolic/symbols.hpp"
 #include "derivations/syntax/expr.hpp"
 
 namespace {
 
-struct Checked {
-  dc::Derivation d;
-  dc::CheckSummary sum;
-  const dc::StepResult& at(const std::string& label) const {
-    for (std::size_t i = 0; i < d.steps.size(); ++i)
-      if (d.steps[i].label == label) return sum.results.at(i);
-    FAIL("no step " << label);
-    return sum.results.at(0);
-  }
-  dc::VerdictKind kind(const std::string& label) const { return at(label).verdict.kind; }
-};
+using test_support::Checked;
 
-Checked check_text(const std::string& body) {
-  Checked c{dc::parse_derivation(dc::SourceText{"pm.dc", body}), {}};
-  c.sum = dc::check_derivation(c.d);
-  return c;
-}
+Checked check_text(const std::string& body) { return test_support::check_text(body, "pm.dc"); }
 
 }  // namespace
 

@@ -11,27 +11,15 @@
 #include "derivations/reader/derivation.hpp"
 #include "derivations/report/report.hpp"
 #include "derivations/rules/check.hpp"
+#include "support/checked.hpp"
 
 namespace {
 
+using test_support::Checked;
+
+Checked check_text(const std::string& body) { return test_support::check_text(body, "evidence.dc"); }
+
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
-
-struct Checked {
-  dc::Derivation d;
-  dc::CheckSummary sum;
-  const dc::StepResult& at(const std::string& label) const {
-    for (std::size_t i = 0; i < d.steps.size(); ++i)
-      if (d.steps[i].label == label) return sum.results.at(i);
-    FAIL("no step " << label);
-    return sum.results.at(0);
-  }
-};
-
-Checked check_text(const std::string& body) {
-  Checked c{dc::parse_derivation(dc::SourceText{"evidence.dc", body}), {}};
-  c.sum = dc::check_derivation(c.d);
-  return c;
-}
 
 }  // namespace
 
