@@ -88,7 +88,7 @@ Node with_sign(const Node& n, int sign) {
       out.pos = n.pos;
       out.args.push_back(std::move(b));
     }
-    out.parenthesized = true;
+    out.parenthesized = n.parenthesized;
     out.length = n.length;
     return out;
   }
@@ -112,17 +112,47 @@ StepResult check_both_signs(const Derivation& d, const Step& s, const ProveOptio
                       claim.sides[0].kind == NodeKind::Symbol && has_plus_minus(claim.sides[1]) &&
                       !s.erratum && !s.names_result;
   if (!values) {
-    StepResult plus, minus;
-    {
-      PlusMinusSign chosen(1);
-      plus = one(d, s, opt);
-    }
-    {
-      PlusMinusSign chosen(-1);
-      minus = one(d, s, opt);
-    }
-    StepResult out = combined(std::move(plus), std::move(minus));
+    // the claim's signs and those of the steps it cites, chosen apart: the claim read with
+    // claim_sign, the citations (converted under the scoped sign) with refs_sign
+    auto run = [&](int claim_sign, int refs_sign) {
+      Step c = s;
+      for (auto& side : c.claim.sides) side = with_sign(side, claim_sign);
+      if (c.erratum)
+        for (auto& side : c.erratum->corrected.sides) side = with_sign(side, claim_sign);
+      PlusMinusSign chosen(refs_sign);
+      StepResult r = one(d, c, opt);
+      r.step = &s;
+      return r;
+    };
+    StepResult out = combined(run(1, 1), run(-1, -1));
     out.step = &s;
+    if (!refs_have || out.verdict.holds()) return out;
+    // Cited steps with ± too: the signs read alike (the upper with the upper) is the claim. An
+    // author who means the opposite pairing writes ∓; one who does not may mean the pairing
+    // loosely, so a claim that holds with the signs opposite is undecided, not refuted, and
+    // only a claim false both ways is refuted.
+    StepResult opposite = combined(run(1, -1), run(-1, 1));
+    if (opposite.verdict.holds()) {
+      Verdict v;
+      v.kind = VerdictKind::Undecided;
+      v.method = out.verdict.method;
+      v.reason = "it holds with each \u00B1 read opposite to those of the steps it cites (write \u2213 where the "
+                 "signs are opposite), not with them read alike";
+      v.detail = v.reason;
+      out.verdict = v;
+      out.derived.clear();
+      return out;
+    }
+    if (out.verdict.kind == VerdictKind::Refuted && opposite.verdict.kind != VerdictKind::Refuted) {
+      Verdict v;
+      v.kind = VerdictKind::Undecided;
+      v.method = out.verdict.method;
+      v.reason = "refuted with each \u00B1 read as in the steps it cites, but not with them read opposite: " +
+                 (opposite.verdict.reason.empty() ? std::string("undecided") : opposite.verdict.reason);
+      v.detail = v.reason;
+      out.verdict = v;
+      out.derived.clear();
+    }
     return out;
   }
   // x = E±: the references' solutions are E+ and E-
@@ -148,7 +178,10 @@ StepResult check_both_signs(const Derivation& d, const Step& s, const ProveOptio
   const std::string product = "(" + x + " - " + to_text(e_plus) + ")*(" + x + " - " + to_text(e_minus) + ") = 0";
   if (out.verdict.kind == VerdictKind::Refuted) {
     out.verdict.method = "both values of \u00B1: " + out.verdict.method;
-    out.derived = "the references have a solution that is neither value of " + x + ": " + product + " does not follow";
+    // (a side that is undefined at a point of the domain speaks for itself)
+    const bool undefined_side = out.verdict.lhs_value.rfind("undefined", 0) == 0 || out.verdict.rhs_value.rfind("undefined", 0) == 0;
+    if (!undefined_side)
+      out.derived = "the references have a solution that is neither value of " + x + ": " + product + " does not follow";
     return out;
   }
   if (!out.verdict.holds()) {

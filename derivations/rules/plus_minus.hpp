@@ -8,7 +8,8 @@
 //     together than one by one);
 //   - otherwise (an identity, or references with ± themselves): each sign, every ± of the step
 //     and of what it cites read alike, must hold by the step's rule; a refuted sign refutes the
-//     step and says which.
+//     step and says which. With cited ± steps, a claim that holds only with the signs paired
+//     the other way is undecided, and one refuted only in one pairing too.
 #pragma once
 #include <functional>
 

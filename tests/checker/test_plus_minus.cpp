@@ -77,9 +77,14 @@ TEST_CASE("plus-minus: a step citing a step with plus-minus reads both with one 
       "both: x = a \u00B1 b\n    by given\n"
       "twice: y = 2*x\n    by given\n"
       "same: y = 2*a \u00B1 2*b\n    by substitute both into twice\n"
-      "crossed: y = 2*a \u2213 2*b\n    by substitute both into twice\n");
+      "crossed: y = 2*a \u2213 2*b\n    by substitute both into twice\n"
+      "wrong: y = 3*a \u00B1 2*b\n    by substitute both into twice\n");
   CHECK(c.kind("same") == K::Proved);
-  CHECK(c.kind("crossed") == K::Refuted);
+  // the signs paired the other way: an author may mean the pairing loosely, so not refuted
+  CHECK(c.kind("crossed") == K::Undecided);
+  CHECK(c.at("crossed").verdict.reason.find("opposite") != std::string::npos);
+  // false with the signs paired either way
+  CHECK(c.kind("wrong") == K::Refuted);
 }
 
 TEST_CASE("plus-minus: a value that is no solution is never proved", "[plus_minus][soundness]") {
