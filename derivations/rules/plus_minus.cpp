@@ -35,6 +35,13 @@ Node binary(NodeKind k, Node a, Node b, const SourcePos& pos) {
   return n;
 }
 
+bool mentions_symbol(const Node& n, const std::string& x) {
+  if (n.kind == NodeKind::Symbol && n.text == x) return true;
+  for (const auto& a : n.args)
+    if (mentions_symbol(a, x)) return true;
+  return false;
+}
+
 // x replaced by value in n (a whole symbol)
 Node replaced(const Node& n, const std::string& x, const Node& value) {
   if (n.kind == NodeKind::Symbol && n.text == x) {
@@ -108,7 +115,10 @@ StepResult check_both_signs(const Derivation& d, const Step& s, const ProveOptio
   const Relation& claim = claim_of(s);
   bool refs_have = false;
   for (const Step* st : cited(d, s)) refs_have = refs_have || relation_has(claim_of(*st));
-  const bool values = !refs_have && !cited(d, s).empty() && claim.sides.size() == 2 &&
+  // (only where the rule's claim is "follows from the references": a limit, series or integral
+  // of a reference means something else, and is checked for each sign)
+  const bool follows_rule = s.rule.name == "rewrite" || s.rule.name == "substitute" || s.rule.name == "solve";
+  const bool values = follows_rule && !refs_have && !cited(d, s).empty() && claim.sides.size() == 2 &&
                       claim.sides[0].kind == NodeKind::Symbol && has_plus_minus(claim.sides[1]) &&
                       !s.erratum && !s.names_result;
   if (!values) {
@@ -194,7 +204,7 @@ StepResult check_both_signs(const Derivation& d, const Step& s, const ProveOptio
     for (const Step* st : cited(d, s)) {
       const Relation& r = claim_of(*st);
       bool mentions = false;
-      for (const auto& side : r.sides) mentions = mentions || to_text(side).find(x) != std::string::npos;
+      for (const auto& side : r.sides) mentions = mentions || mentions_symbol(side, x);
       if (!mentions || r.sides.size() < 2) continue;
       Step sub = s;
       sub.rule = RuleSpec{};

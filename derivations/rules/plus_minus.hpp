@@ -1,6 +1,7 @@
 // A step with ± (`x = (-b ± sqrt(b^2 - 4*a*c))/(2*a)`, `(a ± b)^2 = a^2 ± 2*a*b + b^2`) is one
 // claim for both signs. What it claims depends on where the ± is (docs/format.md, "Both signs"):
-//   - the claim's values x = E± of a name its references determine, the references free of ±:
+//   - the claim's values x = E± of a name its references determine, the references free of ±
+//     (rules rewrite, substitute and solve, whose claim is "follows from the references"):
 //     "the solutions are E+ and E-". Shown as (1) the references imply (x - E+)(x - E-) = 0 (no
 //     other solution; refuted with a point where they hold and x is neither), and (2) each
 //     branch satisfies every reference that mentions x (proved as an identity; when that cannot

@@ -83,8 +83,28 @@ ex integrand_at(const Entry& en, const GiNaC::exvector& args) {
   return m.empty() ? en.g : en.g.subs(m, GiNaC::subs_options::no_pattern);
 }
 
+// The functions of the unknown partial derivatives (arguments: which, id, a, b, parameters),
+// registered on first use without a derivative of their own. (An fderivative of the quantity's
+// function would not do: GiNaC evaluates it through the registered derivative, which is
+// where it came from.)
+unsigned partial_serial_for(std::size_t nparams) {
+  static std::map<std::size_t, unsigned> serials;
+  auto it = serials.find(nparams);
+  if (it != serials.end()) return it->second;
+  const std::string name = "dcpartial" + std::to_string(nparams);
+  unsigned s = GiNaC::function::register_new(GiNaC::function_options(name, static_cast<unsigned>(4 + nparams)));
+  serials.emplace(nparams, s);
+  return s;
+}
+
+bool is_unknown_partial(const ex& e) {
+  return GiNaC::is_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_name().rfind("dcpartial", 0) == 0;
+}
+
 ex unknown_derivative(const GiNaC::exvector& args, unsigned i) {
-  return GiNaC::fderivative(serial_for(args.size() - 3), GiNaC::paramset{i}, args);
+  GiNaC::exvector with{GiNaC::numeric(static_cast<long>(i))};
+  with.insert(with.end(), args.begin(), args.end());
+  return GiNaC::function(partial_serial_for(args.size() - 3), with);
 }
 
 // Leibniz's rule where the integrand is continuous; otherwise the derivative stays unknown.
@@ -109,6 +129,9 @@ ex derivative_of(const GiNaC::exvector& args, unsigned i) {
   try {
     const ex dg = en->g.diff(GiNaC::ex_to<GiNaC::symbol>(en->params[k]));
     if (dg.is_zero()) return 0;
+    // differentiating under the integral sign needs the integrand and its derivative continuous
+    // in t (psi(x)/(x - p) is neither)
+    if (!continuous_everywhere(en->g, tt) || !continuous_everywhere(dg, tt)) return unknown_derivative(args, i);
     // the parameters of dg are en's: the new application is built in them, then moved to args
     ex q = integral_quantity(IntegralSpec{dg, tt, args[1], args[2], en->a_inf, en->b_inf, en->table.get()},
                              [](const ex&) -> ex { throw std::runtime_error("no closed form"); });
@@ -252,11 +275,18 @@ ex integral_quantity(const IntegralSpec& s, const std::function<ex(const ex&)>& 
 bool is_integral_quantity(const ex& e) { return entry_of(e) != nullptr; }
 
 bool has_integral_quantity(const ex& e) {
-  if (is_integral_quantity(e)) return true;
+  if (is_integral_quantity(e) || is_unknown_partial(e)) return true;
   if (GiNaC::is_a<GiNaC::fderivative>(e) && serial_is_ours(e)) return true;
   for (std::size_t i = 0; i < e.nops(); ++i)
     if (has_integral_quantity(e.op(i))) return true;
   return false;
+}
+
+std::optional<std::pair<unsigned, ex>> unknown_partial_of(const ex& e) {
+  if (!is_unknown_partial(e) || e.nops() < 4 || !GiNaC::is_a<GiNaC::numeric>(e.op(0))) return std::nullopt;
+  GiNaC::exvector args(e.begin() + 1, e.end());
+  const auto which = static_cast<unsigned>(GiNaC::ex_to<GiNaC::numeric>(e.op(0)).to_long());
+  return std::make_pair(which, ex(GiNaC::function(serial_for(args.size() - 3), args)));
 }
 
 std::optional<IntegralView> integral_view(const ex& e) {

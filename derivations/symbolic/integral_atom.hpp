@@ -23,6 +23,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <ginac/ginac.h>
 
@@ -63,5 +64,10 @@ struct IntegralView {
   int a_inf = 0, b_inf = 0;
 };
 std::optional<IntegralView> integral_view(const GiNaC::ex& e);
+// A derivative of an integral quantity that Leibniz's rule does not give (the integrand is not
+// continuous): which argument (1, 2: the limits; 3, ...: the parameters) and the quantity.
+// An unknown quantity of its own, drawn independently by the probe (and never the ground of a
+// refutation, as the quantities are not).
+std::optional<std::pair<unsigned, GiNaC::ex>> unknown_partial_of(const GiNaC::ex& e);
 
 }  // namespace dc

@@ -380,6 +380,13 @@ class Builder {
   PNode function(const ex& e) {
     PNode n;
     n.kind = Kind::Function;
+    if (auto partial = unknown_partial_of(e)) {   // D[k](integral(...)), no closed form
+      n.fname = "D[" + std::to_string(partial->first) + "]";
+      n.ftex = "\\partial_{" + std::to_string(partial->first) + "}";
+      n.kids = {build(partial->second)};
+      n.key = render_key(n);
+      return n;
+    }
     if (auto v = integral_view(e)) {   // an integral of a declared function (integral_atom.hpp)
       n.fname = "integral";
       n.ftex = "\\int";

@@ -47,6 +47,8 @@ TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule
                          "upper: diff(integral(psi(x)^2, x, 0, L), L) = psi(L)^2\n    by rewrite\n"
                          "param: diff(integral(A*x*psi(x), x, 0, L), A) = integral(x*psi(x), x, 0, L)\n    by rewrite\n"
                          "const: diff(integral(psi(x)^2, x, 0, L), A) = 0\n    by rewrite\n"
+                         "singular: diff(integral(psi(x)/(x - A), x, 0, L), A) = integral(psi(x)/(x - A)^2, x, 0, L)\n"
+                         "    by rewrite\n"
                          "ftc: integral(diff(psi(x), x), x, 0, L) = psi(L) - psi(0)\n    by rewrite\n"
                          "ftc2_wrong: integral(diff(psi(x), x, 2), x, 0, L) = diff(psi(L), L)\n    by rewrite\n"
                          "ftc_wrong: integral(diff(psi(x), x), x, 0, L) = psi(L) + psi(0)\n    by rewrite\n"
@@ -55,6 +57,9 @@ TEST_CASE("integrals of a declared function are differentiated by Leibniz's rule
                          "    by rewrite\n"
                          "square_wrong: integral(psi(x)*diff(psi(x), x), x, 0, L) = psi(L)^2 - psi(0)^2\n    by rewrite\n");
   CHECK(c.kind("upper") == K::Proved);
+  // not under the integral sign where the integrand is singular (A may lie in (0, L))
+  CHECK(c.kind("singular") != K::Proved);
+  CHECK(c.kind("singular") != K::HoldsNumerically);
   // the fundamental theorem for a derivative of the declared function itself
   CHECK(c.kind("ftc") == K::Proved);
   CHECK(c.kind("ftc2_wrong") == K::Refuted);   // it forgets -psi'(0)

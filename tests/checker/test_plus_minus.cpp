@@ -113,3 +113,16 @@ TEST_CASE("plus-minus: outside a step's check it has no single value", "[plus_mi
   // a declared name cannot be pm or mp
   CHECK(dc::is_reserved_name("pm"));
 }
+
+TEST_CASE("plus-minus: a reference naming another quantity that contains x in its name is not a condition on x", "[plus_minus]") {
+  // v_0 mentions "v" as text, not the symbol v: the values are checked against energy only
+  using K = dc::VerdictKind;
+  Checked c = check_text(
+      "symbol v, v_0 : real [m/s]\n"
+      "symbol g : positive [m/s^2]\n"
+      "symbol h : positive [m]\n"
+      "start: v_0 = 2*g*h/v_0\n    by given\n"
+      "energy: v^2/2 = g*h\n    by given\n"
+      "speed: v = \u00B1sqrt(2*g*h)\n    by solve energy, start for v\n");
+  CHECK(c.kind("speed") == K::Proved);
+}
