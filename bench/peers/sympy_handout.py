@@ -593,12 +593,18 @@ def _():
     return in_solutions(sol, -u_e * diff(mr(tt), tt) / mr(tt) - g)
 
 
-@claim(F09, "velocity", "differentiate the claim, check v(0) = 0")
+@claim(F09, "separated", "the ODE times dt, with dv = v'(t) dt and dm_r = m_r'(t) dt")
 def _():
-    G = -u_e * log(mr(tt) / m0) - g * tt
-    ode_ok = zero(diff(G, tt) - (-u_e * diff(mr(tt), tt) / mr(tt) - g))
-    ic_ok = zero(G.subs(tt, 0).subs(mr(0), m0))
-    return ode_ok and ic_ok
+    dT = sp.Symbol("dT", real=True)
+    dV, dM = diff(vr(tt), tt) * dT, diff(mr(tt), tt) * dT
+    return zero(dV - (-u_e * dM / mr(tt) - g * dT) - dT * (diff(vr(tt), tt) - (-u_e * diff(mr(tt), tt) / mr(tt) - g)))
+
+
+@claim(F09, "velocity_symbols", "integrate each separated term from v = 0, m_r = m0, t = 0")
+def _():
+    s = sp.Symbol("s", positive=True)
+    integrated = vr_ + u_e * sp.integrate(1 / s, (s, m0, m_r)) + g * tt
+    return in_solutions(solve(integrated, vr_), -u_e * log(m_r / m0) - g * tt)
 
 
 @claim(F09, "mass_ratio", "subs v into exp((v + g t)/u_e)")

@@ -18,6 +18,7 @@
 
 #include "derivations/reader/internal/dc_reader.hpp"
 #include "derivations/reader/figures.hpp"
+#include "derivations/symbolic/differential.hpp"
 #include "derivations/syntax/figure.hpp"
 #include "derivations/syntax/io.hpp"
 #include "derivations/syntax/prose.hpp"
@@ -331,6 +332,7 @@ Relation DcReader::relation(const Span& s, std::size_t b, std::size_t e, const s
 // limit engine cannot decide is not an input error: the step that uses it is undecided when
 // it is checked, and the rest of the file is read.
 void DcReader::validate(const Node& n) {
+  declare_differentials(n, d_.symbols);
   if (has_plus_minus(n) && plus_minus_sign() == 0) {   // both values of a ±
     for (int sign : {1, -1}) {
       PlusMinusSign chosen(sign);

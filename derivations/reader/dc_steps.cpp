@@ -395,7 +395,7 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
   std::vector<std::string> allowed;
   if (r == "rewrite") allowed = {"with"};
   else if (r == "substitute") allowed = {"into", "with"};
-  else if (r == "solve") allowed = {"for"};
+  else if (r == "solve" || r == "coefficients") allowed = {"for"};
   else if (r == "limit") allowed = {"->", "of", "with"};
   else if (r == "series") allowed = {"->", "of", "with", "to"};
   else if (r == "first_order") allowed = {"of"};
@@ -428,12 +428,17 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
     if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the substitutions (labels or 'x = value')" + usage(r));
     for (auto& it : pre_items) spec.refs.push_back(ref_or_equation(s, it.first, it.second));
     spec.into = labels(s, require("into"), "the label of the step to substitute into", 1);
-  } else if (r == "solve") {
-    if (pre_items.empty()) fail(s.at(nonspace(s, pre.b)), "expected the labels of the equations to solve" + usage(r));
+  } else if (r == "solve" || r == "coefficients") {
+    if (pre_items.empty())
+      fail(s.at(nonspace(s, pre.b)),
+           std::string(r == "solve" ? "expected the labels of the equations to solve" : "expected the label of the identity") +
+               usage(r));
     for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
     const Group& g = require("for");
     for (auto& it : items(s, g)) spec.unknowns.push_back(symbol_or_value(s, it.first, it.second));
-    if (spec.unknowns.empty()) fail(s.at(nonspace(s, g.b)), "expected the unknowns after 'for'" + usage(r));
+    if (spec.unknowns.empty())
+      fail(s.at(nonspace(s, g.b)),
+           std::string(r == "solve" ? "expected the unknowns after 'for'" : "expected the variables after 'for'") + usage(r));
   } else if (r == "limit" || r == "series") {
     if (pre_items.size() != 1) fail(s.at(nonspace(s, pre.b)), "expected one variable before '->'" + usage(r));
     spec.var = symbol_arg(s, pre_items[0].first, pre_items[0].second);
@@ -530,9 +535,11 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
       fail(s.at(nonspace(s, pre.b)), "expected the label of the equation" + usage(r));
     for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
     // without a cited equation, differentiate and integrate read the variable from the claim's
-    // own diff(f, x) / integral(f, x, a, b), so 'wrt' may be left out
+    // own diff(f, x) / integral(f, x, a, b), so 'wrt' may be left out; so does integrating a
+    // differential equation from its start, `by integrate A with v = v0, x = x0`
     const Group* g = group("wrt");
-    if (!g && (pre_items.empty() && r != "solves_ode")) {
+    const bool differential_form = r == "integrate" && group("with") && !group("from");
+    if (!g && ((pre_items.empty() && r != "solves_ode") || differential_form)) {
     } else {
       if (!g) g = &require("wrt");
       auto wit = items(s, *g);
@@ -572,12 +579,13 @@ std::string DcReader::usage(const std::string& r) {
       {"first_order", "by first_order d1, d2 of A"},
       {"differentiate", "by differentiate [A, ...] wrt t"},
       {"integrate", "by integrate A wrt t from T0 [with y(T0) = value, ...]' or 'by integrate [A, ...] wrt x' for a claim "
-                    "'integral(f, x, a, b) = G"},
+                    "'integral(f, x, a, b) = G' or 'by integrate A with x = x0, t = t0, ...' for a differential equation A"},
       {"solves_ode", "by solves_ode A wrt t [with y(T0) = value, ...]"},
       {"stationary", "by stationary of A wrt x' (A a step or an expression) with the claim 'x = point"},
       {"maximum", "by maximum of A wrt x' (A a step or an expression) with the claim 'x = point"},
       {"minimum", "by minimum of A wrt x' (A a step or an expression) with the claim 'x = point"},
-      {"instance", "by instance of LAW [with x = value, ...]"}};
+      {"instance", "by instance of LAW [with x = value, ...]"},
+      {"coefficients", "by coefficients A [, B, ...] for x, t, ...' (A holds for every x, t, ...)"}};
   auto it = u.find(r);
   return it == u.end() ? "" : "; usage: '" + it->second + "'";
 }
@@ -685,7 +693,7 @@ RuleArg DcReader::symbol_arg(const Span& s, std::size_t b, std::size_t e) {
   {
     std::vector<std::string> names;
     for (const auto& sym : d_.symbols.all())
-      if (!sym.is_function) names.push_back(sym.name);
+      if (!sym.is_function && !sym.is_differential) names.push_back(sym.name);
     fail(a.pos, "undefined symbol '" + a.label + "'" + did_you_mean(a.label, names) + ": declare it with 'symbol " +
                     a.label + " ...'",
          a.length);

@@ -67,7 +67,7 @@ std::string document_as_dc(const Derivation& d, const CheckSummary& summary) {
   out += "# Rows with no justification found are premises here (`by given`, note \"TODO …\"): give their rule.\n";
   out += "title " + quoted(d.title) + "\n\n";
   for (const auto& info : d.symbols.all()) {
-    if (info.defined_by_step) continue;
+    if (info.defined_by_step || info.is_differential) continue;
     if (info.is_function) {
       std::string params;
       for (const auto& p : info.params) params += (params.empty() ? "" : ", ") + p;

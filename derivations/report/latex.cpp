@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "derivations/symbolic/differential.hpp"
 
 namespace dc {
 namespace {
@@ -119,7 +120,8 @@ class Writer {
         continue;
       }
       bool dot = !s.empty() && (std::isdigit(static_cast<unsigned char>(s[0])) || s[0] == '-' || s[0] == '.');
-      out += dot ? " \\cdot " + s : " " + s;
+      const bool differential = is_differential_call(f, table_) && !f.parenthesized;   // u_e\,\mathrm{d}m_r
+      out += dot ? " \\cdot " + s : (differential ? "\\," : " ") + s;
     }
     return out;
   }
@@ -303,6 +305,10 @@ class Writer {
                         is_call(r, "mp");
       if (n.args.size() == 1) return sign + operand(r, need);
       return operand(n.args[0], false) + " " + sign + operand(r, need);
+    }
+    if (is_differential_call(n, table_)) {   // d(v): \mathrm{d}v, d(f(t)): \mathrm{d}f
+      const Node& a = n.args[0];
+      return "\\mathrm{d}" + (a.kind == NodeKind::Call && bare_function(a) ? symbol(a.text) : operand(a, a.kind != NodeKind::Symbol));
     }
     if (f == "sqrt" && n.args.size() == 1) return "\\sqrt{" + top(n.args[0]) + "}";
     if (f == "exp" && n.args.size() == 1) return "\\mathrm{e}^{" + inline_term(n.args[0]) + "}";

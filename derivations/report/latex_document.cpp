@@ -181,7 +181,7 @@ class DocumentWriter {
   static std::string quantities(const Derivation& d) {
     std::vector<std::pair<std::string, std::vector<std::string>>> groups;   // unit -> TeX names
     for (const SymbolInfo& s : d.symbols.all()) {
-      if (!s.has_dimension) continue;
+      if (!s.has_dimension || s.is_differential) continue;
       if (s.defined_by_step) {
         const Step* def = nullptr;
         for (const Step& st : d.steps)

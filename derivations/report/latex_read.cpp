@@ -22,6 +22,7 @@ struct Name {
   std::string name;
   bool function = false;
   std::vector<std::string> params;
+  bool differential = false;   // \mathrm{d}v, the symbol d(v)
 };
 
 class LatexReader {
@@ -29,7 +30,7 @@ class LatexReader {
   LatexReader(std::string_view s, const SymbolTable& t, SourcePos origin) : s_(s), origin_(std::move(origin)) {
     for (const auto& info : t.all()) {
       if (info.tex.empty()) continue;
-      names_.push_back({info.tex, info.name, info.is_function, info.params});
+      names_.push_back({info.tex, info.name, info.is_function, info.params, info.is_differential});
     }
     // Longest TeX name first; for equal TeX names, the symbol before the function (a call is
     // recognised by the '(' that follows).
@@ -214,6 +215,13 @@ class LatexReader {
       skip_ws();
       if (peek() == '/') { ++i_; left = bin(NodeKind::Div, std::move(left), factor()); continue; }
       if (factor_can_start()) { left = bin(NodeKind::Mul, std::move(left), factor()); continue; }
+      if (starts("\\,")) {   // u_e\,\mathrm{d}m_r: a thin space before a differential factor
+        const std::size_t at = i_;
+        i_ += 2;
+        const Name* n = match_name();
+        if (n && n->differential) { left = bin(NodeKind::Mul, std::move(left), factor()); continue; }
+        i_ = at;
+      }
       break;
     }
     return left;

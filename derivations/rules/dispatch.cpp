@@ -28,6 +28,7 @@ constexpr std::pair<const char*, Rule> kRules[] = {
     {"maximum", stationary},
     {"minimum", stationary},
     {"instance", instance},
+    {"coefficients", coefficients},
 };
 
 Verdict dispatch(StepContext& c, const Relation& claim) {

@@ -19,9 +19,11 @@ Verdict series(StepContext& c, const Relation& claim);           // limit_series
 Verdict first_order(StepContext& c, const Relation& claim);      // limit_series.cpp
 Verdict differentiate(StepContext& c, const Relation& claim);    // differentiate.cpp
 Verdict integrate(StepContext& c, const Relation& claim);        // integrate.cpp
+Verdict integrate_differential(StepContext& c, const Relation& claim);   // integrate_differential.cpp
 Verdict solves_ode(StepContext& c, const Relation& claim);       // solves_ode.cpp
 Verdict stationary(StepContext& c, const Relation& claim);       // stationary.cpp (also maximum, minimum)
 Verdict instance(StepContext& c, const Relation& claim);         // instance.cpp
+Verdict coefficients(StepContext& c, const Relation& claim);     // coefficients.cpp
 
 // Run the step's rule on `claim` (its claim, or the printed claim of an erratum). Whatever
 // stops the rule becomes an undecided verdict with the reason, and an error in res when the

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "derivations/calculus/integral_equal.hpp"
+#include "derivations/symbolic/differential.hpp"
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/kernel/quadrature.hpp"
@@ -305,8 +306,13 @@ Verdict integrate(StepContext& c, const Relation& claim) {
       return all.result();
     }
   }
+  if (!rule.var && !rule.refs.empty()) {   // a differential equation (integrate_differential.cpp)
+    const std::vector<Eq> a = c.equations(rule.refs[0]);
+    if (!a.empty() && !differentials_in(a[0].e, c.d.symbols).empty()) return integrate_differential(c, claim);
+  }
   if (!rule.var)
-    c.fail(rule.pos, "'by integrate' with cited equations needs the variable: 'by integrate A wrt t ...'",
+    c.fail(rule.pos, "'by integrate' with cited equations needs the variable: 'by integrate A wrt t ...' (or, for a "
+                     "differential equation A such as d(v) = a*d(t), its start: 'by integrate A with v = v0, t = t0')",
            static_cast<int>(rule.text.size()));
   ex t = c.symbol_of(*rule.var);
   std::vector<Eq> ref_eqs = c.all_equations(rule.refs);

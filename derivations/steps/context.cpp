@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "derivations/symbolic/differential.hpp"
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/printer.hpp"
@@ -265,11 +266,20 @@ Substitutions StepContext::substitutions(const std::vector<RuleArg>& args, std::
     auto substitutable = [](const ex& e) {
       return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e) || pool_function_index(e) >= 0;
     };
-    if (substitutable(lhs) && !rhs.has(lhs)) out.push_back({lhs, rhs});
-    else if (substitutable(rhs) && !lhs.has(rhs)) out.push_back({rhs, lhs});
+    const bool forward = substitutable(lhs) && !rhs.has(lhs);
+    if (forward || (substitutable(rhs) && !lhs.has(rhs))) {
+      if (!forward) std::swap(lhs, rhs);
+      // `with f(t) = x` where the file uses d(x): f'(t) is d(x)/d(t) (differential.hpp)
+      const ex dx = differential_of(rhs, d.symbols);
+      if (!dx.is_zero() && pool_function_index(lhs) >= 0 && pool_derivative_order(lhs) == 0 && lhs.nops() == 1) {
+        const ex dt = differential_of(lhs.op(0), d.symbols);
+        if (!dt.is_zero()) out.push_back({lhs.diff(GiNaC::ex_to<GiNaC::symbol>(lhs.op(0))), dx / dt});
+      }
+      out.push_back({lhs, rhs});
+    }
     else if (rest) rest->push_back({lhs - rhs, ex(), a.label});
     else fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
-    if (labels && out.size() > n) labels->push_back(a.label);
+    for (std::size_t k = n; labels && k < out.size(); ++k) labels->push_back(a.label);
   }
   return out;
 }

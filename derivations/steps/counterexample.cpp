@@ -37,6 +37,17 @@ std::string domain_gap(const StepContext& c, const ex& s, const ex& value, const
 
 const char* const kUndefined = "the references are undefined at the counterexample";
 
+// The symbol s of an eliminated power atom s^n (n a positive integer >= 2), else 0: the
+// references give s^n, and s is computed from it (a root), never drawn at random.
+ex power_atom_base(const ex& var) {
+  if (!GiNaC::is_a<GiNaC::power>(var) || !GiNaC::is_a<GiNaC::symbol>(var.op(0))) return 0;
+  const ex n = var.op(1);
+  if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_pos_integer() ||
+      GiNaC::ex_to<GiNaC::numeric>(n) < 2)
+    return 0;
+  return var.op(0);
+}
+
 // Does the point fix every quantity of e (no symbol without a value, no abstract application)?
 bool fixed_by(const StepContext& c, const ex& e, const GiNaC::exmap& Q) {
   if (detail::has_abstract_application(e)) return false;
@@ -91,6 +102,24 @@ Gap gap_at(StepContext& c, const Reduction& red, const std::vector<Eq>& eqs,
         if (!gap.empty()) return {"the counterexample " + gap + " by " + reference_names(el.sources, eqs), &el};
         Q[var] = value;
         assigned.push_back(var);
+      } else if (const ex base = power_atom_base(var);
+                 el.function_atom && !base.is_zero() && !Q.count(base) && fixed_by(c, value, open)) {
+        // s^n = value: s is its real n-th root, with the sign the domain of s allows
+        const int n = GiNaC::ex_to<GiNaC::numeric>(var.op(1)).to_int();
+        detail::RealValue rv = detail::eval_real(value, 60);
+        if (!rv.ok) return {kUndefined};
+        const SymbolInfo* info = symbols.find(GiNaC::ex_to<GiNaC::symbol>(base));
+        if (n % 2 == 0 && rv.value.is_negative())
+          return {"the counterexample gives " + c.text(var) + " = " + c.text(value) + ", so " + c.text(base) +
+                      " is not real: outside its domain (" + (info ? info->domain.to_string() : "real") + ")",
+                  &el};
+        const bool negative = n % 2 == 0 ? (info && info->domain.kind == Domain::Kind::Negative) : rv.value.is_negative();
+        const ex root = GiNaC::pow(negative && n % 2 == 1 ? -value : value, GiNaC::numeric(1, n));
+        const ex s_value = negative ? -root : root;
+        std::string gap = domain_gap(c, base, s_value, c.atoms.restore(el.value));
+        if (!gap.empty()) return {"the counterexample " + gap + " by " + reference_names(el.sources, eqs), &el};
+        Q[base] = s_value;
+        assigned.push_back(base);
       } else if (el.function_atom) {
         K k = fixed_by(c, var, open) && fixed_by(c, c.atoms.restore(el.value), open)
                   ? compare(c, var, c.atoms.restore(el.value), open)
@@ -154,7 +183,9 @@ Gap counterexample_gap(StepContext& c, const Reduction& red, const std::vector<E
                             [&](const ex& s) {
                               if (P.count(s)) return true;
                               for (const auto& el : red.eliminated)
-                                if (c.atoms.restore(el.var).is_equal(s)) return true;
+                                if (c.atoms.restore(el.var).is_equal(s) ||
+                                    (el.function_atom && power_atom_base(c.atoms.restore(el.var)).is_equal(s)))
+                                  return true;
                               return false;
                             }),
              free.end());

@@ -344,7 +344,20 @@ Reduction reduce(StepContext& c, const std::vector<Eq>& eqs, const ex& target, c
 ex reduced(StepContext& c, const ex& e, const Reduction& red) {
   ex r = c.atoms(e);
   for (const auto& el : red.eliminated) r = r.subs(el.var == el.value, GiNaC::subs_options::no_pattern);
-  return c.atoms.restore(r);
+  r = c.atoms.restore(r);
+  // gamma^2 eliminated, gamma positive: gamma itself is (gamma^2)^(1/2) wherever it is left
+  for (const auto& el : red.eliminated) {
+    const ex var = c.atoms.restore(el.var);
+    if (!el.function_atom || !GiNaC::is_a<GiNaC::power>(var) || !GiNaC::is_a<GiNaC::symbol>(var.op(0)) ||
+        !GiNaC::is_a<GiNaC::numeric>(var.op(1)) || !GiNaC::ex_to<GiNaC::numeric>(var.op(1)).is_pos_integer() ||
+        !r.has(var.op(0)))
+      continue;
+    const SymbolInfo* s = c.d.symbols.find(GiNaC::ex_to<GiNaC::symbol>(var.op(0)));
+    const ex value = c.atoms.restore(el.value);
+    if (s && s->domain.strictly_positive() && !value.has(var.op(0)))
+      r = r.subs(var.op(0) == GiNaC::pow(value, 1 / var.op(1)), GiNaC::subs_options::no_pattern);
+  }
+  return r;
 }
 
 std::string eliminated_text(const StepContext& c, const Reduction& red) {

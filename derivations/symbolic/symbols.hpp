@@ -61,6 +61,7 @@ struct SymbolInfo {
   GiNaC::ex sym;             // the GiNaC symbol (possymbol when domain is positive)
   SourcePos pos;             // where it was declared or defined
   bool is_function = false;  // declared as a function of other symbols: v(t)
+  bool is_differential = false;  // the differential d(x) of a symbol (differential.hpp)
   std::vector<std::string> params;  // for functions: parameter names
   bool defined_by_step = false;     // introduced by a definition step, not a declaration
 };

@@ -17,7 +17,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
 #include <cln/integer.h>
 #include <ginac/ginac.h>
 
@@ -26,6 +25,7 @@
 #include "derivations/syntax/literal.hpp"
 #include "derivations/syntax/source.hpp"
 #include "derivations/symbolic/calculus_hooks.hpp"
+#include "derivations/symbolic/differential.hpp"
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/symbols.hpp"
@@ -94,7 +94,7 @@ std::string number_text(const GiNaC::numeric& x) {
 std::vector<std::string> names_of(const SymbolTable& table, bool functions) {
   std::vector<std::string> out;
   for (const auto& s : table.all())
-    if (s.is_function == functions) out.push_back(s.name);
+    if (s.is_function == functions && !s.is_differential) out.push_back(s.name);
   if (!functions) out.push_back("pi");
   return out;
 }
@@ -450,6 +450,7 @@ class Converter {
 
   GiNaC::ex call(const Node& n) {
     const std::string& f = n.text;
+    if (is_differential_call(n, table_)) return differential_value(n, table_, n.args[0].kind == NodeKind::Call ? conv(n.args[0]) : 0);
     if (f == "pm" || f == "mp") {
       check_count(n, 1, 2, "1 or 2 arguments");
       const int chosen = plus_minus_sign();
@@ -699,6 +700,7 @@ class Dimensioner {
 
   Dimension call(const Node& n) {
     const std::string& f = n.text;
+    if (is_differential_call(n, table_)) return dim(n.args[0]);
     if ((f == "pm" || f == "mp") && (n.args.size() == 1 || n.args.size() == 2)) {   // as a + b, or -b
       Node as = n;
       as.kind = n.args.size() == 2 ? NodeKind::Add : NodeKind::Neg;
@@ -785,9 +787,7 @@ Integrand integrand_of(const Node& n, const SymbolTable& table) {
 
 Dimension dimension_of(const Node& n, const SymbolTable& table) { return Dimensioner(table).dim(n); }
 
-namespace {
-CalculusHooks g_calculus_hooks;
-}  // namespace
+namespace { CalculusHooks g_calculus_hooks; }  // namespace
 
 void set_calculus_hooks(const CalculusHooks& hooks) { g_calculus_hooks = hooks; }
 const CalculusHooks& calculus_hooks() { return g_calculus_hooks; }

@@ -28,7 +28,8 @@ namespace dc::reader_detail {
 inline const std::vector<std::string> kRuleNames = {"given",  "definition", "rewrite",     "substitute",
                                                     "solve",  "limit",      "first_order", "series",
                                                     "differentiate", "integrate", "solves_ode",
-                                                    "stationary", "maximum", "minimum", "instance"};
+                                                    "stationary", "maximum", "minimum", "instance",
+                                                    "coefficients"};
 inline const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
 inline const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
 inline const std::vector<std::string> kStatementKeywords = {"title", "handout", "section", "symbol", "function", "assume",
