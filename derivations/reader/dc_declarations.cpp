@@ -13,6 +13,27 @@ namespace dc::reader_detail {
 
 // --- symbol / function -------------------------------------------------------------------
 
+// The parameters of a declared function, after its '(' up to and past the ')'.
+std::vector<std::string> DcReader::parameters(const Span& s, std::size_t& p, const std::string& owner) {
+  std::vector<std::string> params;
+  for (;;) {
+    skip_ws(s, p);
+    SourcePos ap = s.at(p);
+    std::string a = identifier(s, p, "an argument name (a declared symbol)");
+    const SymbolInfo* info = d_.symbols.find(a);
+    if (!info || info->is_function || info->vector_dim)
+      fail(ap, "the argument '" + a + "' of '" + owner + "' must be a declared symbol (declare it first with 'symbol " + a +
+                   " : real [s]')",
+           static_cast<int>(a.size()));
+    params.push_back(a);
+    skip_ws(s, p);
+    if (p < s.text.size() && s.text[p] == ',') { ++p; continue; }
+    if (p < s.text.size() && s.text[p] == ')') { ++p; break; }
+    fail(s.at(p), "expected ',' or ')' in the argument list of '" + owner + "'");
+  }
+  return params;
+}
+
 void DcReader::symbol_statement(const Span& s, bool is_function) {
   std::size_t p = 0;
   struct NameAt { std::string name; SourcePos pos; };
@@ -27,21 +48,7 @@ void DcReader::symbol_statement(const Span& s, bool is_function) {
     if (p >= s.text.size() || s.text[p] != '(')
       fail(s.at(p), "expected '(' and the argument of function '" + names[0].name + "', e.g. 'function v(t)'");
     ++p;
-    for (;;) {
-      skip_ws(s, p);
-      SourcePos ap = s.at(p);
-      std::string a = identifier(s, p, "an argument name (a declared symbol)");
-      const SymbolInfo* info = d_.symbols.find(a);
-      if (!info || info->is_function)
-        fail(ap, "the argument '" + a + "' of function '" + names[0].name +
-                     "' must be a declared symbol (declare it first with 'symbol " + a + " : real [s]')",
-             static_cast<int>(a.size()));
-      params.push_back(a);
-      skip_ws(s, p);
-      if (p < s.text.size() && s.text[p] == ',') { ++p; continue; }
-      if (p < s.text.size() && s.text[p] == ')') { ++p; break; }
-      fail(s.at(p), "expected ',' or ')' in the argument list of '" + names[0].name + "'");
-    }
+    params = parameters(s, p, names[0].name);
   } else {
     for (;;) {
       skip_ws(s, p);

@@ -19,6 +19,8 @@
 #include "derivations/reader/internal/dc_reader.hpp"
 #include "derivations/reader/figures.hpp"
 #include "derivations/symbolic/differential.hpp"
+#include "derivations/symbolic/printer.hpp"
+#include "derivations/symbolic/vectors.hpp"
 #include "derivations/syntax/figure.hpp"
 #include "derivations/syntax/io.hpp"
 #include "derivations/syntax/prose.hpp"
@@ -32,6 +34,9 @@ Derivation DcReader::run() {
   collect_labels();
   for (const auto& st : statements_) statement(st);
   check_assumptions();
+  if (vector_arrows_)   // `notation arrows`: \vec{v} for every vector without a tex of its own
+    for (const auto& name : default_vector_tex_)
+      d_.symbols.set_tex(name, vector_tex("\\vec", name));
   if (d_.steps.empty()) {
     // A file without steps checks nothing; passing it as "0 steps" would hide a wrong file
     // (an empty one, a truncated one, a file of another format).
@@ -180,15 +185,20 @@ void DcReader::statement(const Statement& st) {
       }
       (w == "title" ? d_.title : d_.section) = str;
     } else if (w == "notation") {
-      // notation dot | leibniz: how the LaTeX writes derivatives of declared functions
+      // notation dot | leibniz: how the LaTeX writes derivatives of declared functions;
+      // notation arrows | bold: how it writes vectors
       std::size_t p = 0;
       skip_ws(s, p);
       SourcePos at = s.at(p);
-      std::string v = identifier(s, p, "'dot' or 'leibniz' after notation");
-      if (v != "dot" && v != "leibniz")
-        fail(at, "unknown notation '" + v + "'; expected 'dot' (\\dot{x}) or 'leibniz' (dx/dt)",
+      std::string v = identifier(s, p, "'dot', 'leibniz', 'arrows' or 'bold' after notation");
+      if (v != "dot" && v != "leibniz" && v != "arrows" && v != "bold")
+        fail(at, "unknown notation '" + v + "'; expected 'dot' (\\dot{x}), 'leibniz' (dx/dt), 'arrows' (\\vec{v}) or 'bold' (\\mathbf{v})",
              static_cast<int>(v.size()));
       expect_end(s, p);
+      if (v == "arrows" || v == "bold") {
+        vector_arrows_ = v == "arrows";
+        return;
+      }
       d_.dot_derivatives = v == "dot";
     } else if (w == "heading" || w == "figure" || w == "text" || w == "remark") {
       prose_statement(w, s, {file(), st.first_line, 1});
@@ -196,6 +206,8 @@ void DcReader::statement(const Statement& st) {
       symbol_statement(s, false);
     } else if (w == "function") {
       symbol_statement(s, true);
+    } else if (w == "vector") {
+      vector_statement(s);
     } else {
       assume_statement(s, {file(), st.first_line, 1});
     }
@@ -207,7 +219,7 @@ void DcReader::statement(const Statement& st) {
     if (l[0] == '(') parse_header(l, st.first_line, h, true);
     std::string shown = w.empty() ? l.substr(0, utf8_length(l, 0)) : w;
     fail({file(), st.first_line, 1},
-         "unknown statement '" + shown + "'; expected one of title, handout, section, symbol, function, assume, "
+         "unknown statement '" + shown + "'; expected one of title, handout, section, symbol, function, vector, assume, "
          "heading, text, remark, figure, notation, or a step '[(TAG)] LABEL: CLAIM'",
          static_cast<int>(std::max<std::size_t>(1, shown.size())));
   }
@@ -333,6 +345,10 @@ Relation DcReader::relation(const Span& s, std::size_t b, std::size_t e, const s
 // it is checked, and the rest of the file is read.
 void DcReader::validate(const Node& n) {
   declare_differentials(n, d_.symbols);
+  if (const int k = vector_shape(n, d_.symbols)) {   // a vector: each component (vectors.hpp)
+    for (int i = 1; i <= k; ++i) validate(vector_component(n, d_.symbols, i));
+    return;
+  }
   if (has_plus_minus(n) && plus_minus_sign() == 0) {   // both values of a ±
     for (int sign : {1, -1}) {
       PlusMinusSign chosen(sign);

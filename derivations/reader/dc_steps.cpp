@@ -7,13 +7,17 @@
 
 #include "derivations/reader/internal/dc_reader.hpp"
 #include "derivations/calculus/big_o.hpp"
+#include "derivations/symbolic/vectors.hpp"
 
 namespace dc::reader_detail {
 
 // --- steps -------------------------------------------------------------------------------
 
 void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
-  if (contains(kRuleKeywords, h.label) || contains(kAttributeKeywords, h.label) || is_reserved_name(h.label))
+  // (the vector functions came later than the labels authors use: `norm:` stays a label)
+  const bool vector_word = h.label == "dot" || h.label == "cross" || h.label == "norm" || h.label == "vec";
+  if (contains(kRuleKeywords, h.label) || contains(kAttributeKeywords, h.label) ||
+      (is_reserved_name(h.label) && !vector_word))
     fail(h.label_pos, "'" + h.label + "' is a reserved word and cannot be a step label",
          static_cast<int>(h.label.size()));
   if (auto it = defined_.find(h.label); it != defined_.end()) {
@@ -116,6 +120,7 @@ void DcReader::step_statement(const Statement& st, const DcReader::Header& h) {
   if (introduces) introduce_definition(step);
   // Undefined symbols (and other conversion errors) in the claim; for an erratum step the
   // printed claim's error is kept for the report, the corrected claim must be valid.
+  (void)vector_shape(step.erratum ? step.erratum->corrected : step.claim, d_.symbols);   // sides of one shape
   if (step.erratum) {
     for (const auto& side : step.erratum->corrected.sides) validate(side);
   } else {
@@ -365,8 +370,8 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
   int depth = 0;
   for (std::size_t i = p; i < s.text.size(); ++i) {
     char c = s.text[i];
-    if (c == '(') { ++depth; continue; }
-    if (c == ')') { --depth; continue; }
+    if (c == '(' || c == '[') { ++depth; continue; }
+    if (c == ')' || c == ']') { --depth; continue; }
     if (depth != 0) continue;
     if (c == '-' && i + 1 < s.text.size() && s.text[i + 1] == '>') {
       groups.back().e = i;
@@ -435,7 +440,20 @@ RuleSpec DcReader::rule_line(const Span& s, const SourcePos& by_pos) {
                usage(r));
     for (auto& it : pre_items) spec.refs.push_back(label_arg(s, it.first, it.second));
     const Group& g = require("for");
-    for (auto& it : items(s, g)) spec.unknowns.push_back(symbol_or_value(s, it.first, it.second));
+    for (auto& it : items(s, g)) {
+      RuleArg u = symbol_or_value(s, it.first, it.second);
+      const SymbolInfo* v = u.kind == RuleArg::Kind::Symbol ? d_.symbols.find(u.label) : nullptr;
+      if (!v || !v->vector_dim || v->is_function) {
+        spec.unknowns.push_back(std::move(u));
+        continue;
+      }
+      for (const auto& component : v->components) {   // a vector unknown: its components
+        RuleArg cu = u;
+        cu.label = component;
+        cu.value = parse_expression(component, u.pos);
+        spec.unknowns.push_back(std::move(cu));
+      }
+    }
     if (spec.unknowns.empty())
       fail(s.at(nonspace(s, g.b)),
            std::string(r == "solve" ? "expected the unknowns after 'for'" : "expected the variables after 'for'") + usage(r));
@@ -602,8 +620,8 @@ std::vector<std::pair<std::size_t, std::size_t>> DcReader::items(const Span& s, 
   };
   for (std::size_t i = g.b; i < g.e; ++i) {
     char c = s.text[i];
-    if (c == '(') ++depth;
-    else if (c == ')') --depth;
+    if (c == '(' || c == '[') ++depth;   // (a vector literal [a, b, c] is one argument)
+    else if (c == ')' || c == ']') --depth;
     else if (c == ',' && depth == 0) {
       push(from, i);
       from = i + 1;
@@ -679,6 +697,7 @@ RuleArg DcReader::ref_or_equation(const Span& s, std::size_t b, std::size_t e) {
   Relation rel = relation(s, b, e, "a label or 'x = value'");
   if (rel.sides.size() != 2)
     fail(a.pos, "expected a label or an equation 'x = value', found '" + a.label + "'", a.length);
+  (void)vector_shape(rel, d_.symbols);
   for (const auto& side : rel.sides) validate(side);
   a.kind = RuleArg::Kind::Equation;
   a.equation = std::move(rel);

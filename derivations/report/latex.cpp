@@ -88,6 +88,7 @@ class Writer {
   // Binds like an atom when juxtaposed (no parentheses needed as a factor).
   static bool needs_group_as_factor(const Node& f, bool first) {
     if (is_call(f, "pm") || is_call(f, "mp")) return f.args.size() == 2 || !first;   // (a \pm b) c
+    if (is_call(f, "dot") || is_call(f, "cross")) return true;   // b (a \cdot a)
     switch (f.kind) {
       case NodeKind::Add:
       case NodeKind::Sub: return true;
@@ -354,6 +355,16 @@ class Writer {
     }
     if (f == "eval_between" && n.args.size() == 4)   // the evaluation bar [F]_a^b
       return "\\left[" + top(n.args[0]) + "\\right]_{" + top(n.args[2]) + "}^{" + top(n.args[3]) + "}";
+    if (f == "vec") {   // a column vector
+      std::string rows;
+      for (const auto& a : n.args) rows += (rows.empty() ? "" : " \\\\ ") + top(a);
+      return "\\begin{pmatrix} " + rows + " \\end{pmatrix}";
+    }
+    if ((f == "dot" || f == "cross") && n.args.size() == 2) {
+      auto side = [&](const Node& a) { return operand(a, !is_atom(a) && !(a.kind == NodeKind::Call && a.text == "vec")); };
+      return side(n.args[0]) + (f == "dot" ? " \\cdot " : " \\times ") + side(n.args[1]);
+    }
+    if (f == "norm" && n.args.size() == 1) return "\\left|" + top(n.args[0]) + "\\right|";
     if (is_builtin_function(f)) return "\\operatorname{" + f + "}\\left(" + args(n) + "\\right)";
     if (bare_function(n)) return symbol(f);
     return symbol(f) + "(" + args(n) + ")";

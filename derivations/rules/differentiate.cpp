@@ -7,6 +7,7 @@
 // `diff(y, t) = F0` holds and `0 = F0` is still refuted.
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/steps/follows.hpp"
+#include "derivations/symbolic/vectors.hpp"
 
 namespace dc::rules {
 
@@ -64,8 +65,8 @@ Verdict differentiate(StepContext& c, const Relation& claim) {
   }
   // the derivative of the first equation, as derived
   std::string derived;
-  {
-    std::vector<ex> as = c.sides(claim_of(c.ref_step(rule.refs[0])));
+  if (const Relation& first = claim_of(c.ref_step(rule.refs[0])); vector_shape(first, c.d.symbols) == 0) {
+    std::vector<ex> as = c.sides(first);
     if (as.size() >= 2) derived = c.text(as[0].diff(ts)) + " = " + c.text(as[1].diff(ts));
   }
   c.res.derived = derived;

@@ -56,14 +56,7 @@ Node replaced(const Node& n, const std::string& x, const Node& value) {
 
 // The two results in one: both hold (the weaker kind), or the sign that does not.
 StepResult combined(StepResult plus, StepResult minus) {
-  auto worse = [](const StepResult& r) {
-    switch (r.verdict.kind) {
-      case VerdictKind::Refuted: return 3;
-      case VerdictKind::Undecided: return 2;
-      case VerdictKind::HoldsNumerically: return 1;
-      default: return 0;
-    }
-  };
+  auto worse = [](const StepResult& r) { return severity(r.verdict.kind); };
   const bool minus_worse = worse(minus) > worse(plus);
   StepResult out = minus_worse ? std::move(minus) : std::move(plus);
   const int sign = minus_worse ? -1 : 1;

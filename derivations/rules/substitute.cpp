@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "derivations/symbolic/functions.hpp"
+#include "derivations/symbolic/vectors.hpp"
 #include "derivations/rules/dispatch.hpp"
 #include "derivations/steps/follows.hpp"
 
@@ -18,31 +19,41 @@ Verdict substitute(StepContext& c, const Relation& claim) {
   auto w = c.substitutions(rule.with, nullptr, &labels);
   subs.insert(subs.end(), w.begin(), w.end());
 
-  // C with the substitutions applied: C'
+  // C with the substitutions applied: C' (a vector C: each of its components)
   const Step& into = c.ref_step(rule.into[0]);
-  std::vector<ex> cs = c.sides(claim_of(into));
+  const Relation& into_claim = claim_of(into);
+  const int components = vector_shape(into_claim, c.d.symbols);
+  std::vector<std::vector<ex>> parts;
+  for (int k = components ? 1 : 0; k <= components; ++k)
+    parts.push_back(c.sides(components ? vector_component(into_claim, c.d.symbols, k) : into_claim));
   std::vector<std::string> applied;   // the substitutions C' rests on
-  for (auto& e : cs) {
-    std::vector<bool> used;
-    e = apply_subs(e, subs, &used);
-    for (std::size_t i = 0; i < used.size(); ++i)
-      if (used[i] && std::find(applied.begin(), applied.end(), labels[i]) == applied.end()) applied.push_back(labels[i]);
-  }
+  for (auto& part : parts)
+    for (auto& e : part) {
+      std::vector<bool> used;
+      e = apply_subs(e, subs, &used);
+      for (std::size_t i = 0; i < used.size(); ++i)
+        if (used[i] && std::find(applied.begin(), applied.end(), labels[i]) == applied.end()) applied.push_back(labels[i]);
+    }
+  const std::vector<ex>& cs = parts.front();
 
   // The equations: C' and every reference and substitution
   std::vector<Eq> eqs;
-  for (std::size_t i = 0; i + 1 < cs.size(); ++i) {
-    Eq q{cs[i] - cs[i + 1], ex(), into.label, applied};
-    if (i == 0 && (GiNaC::is_a<GiNaC::symbol>(cs[0]) || pool_function_index(cs[0]) >= 0)) q.hint = cs[0];
-    eqs.push_back(q);
-  }
+  for (const auto& part : parts)
+    for (std::size_t i = 0; i + 1 < part.size(); ++i) {
+      Eq q{part[i] - part[i + 1], ex(), into.label, applied};
+      if (i == 0 && (GiNaC::is_a<GiNaC::symbol>(part[0]) || pool_function_index(part[0]) >= 0)) q.hint = part[0];
+      eqs.push_back(q);
+    }
   for (const auto* group : {&rule.refs, &rule.with})
     for (const auto& a : *group) {
       auto e = c.equations(a);
       eqs.insert(eqs.end(), e.begin(), e.end());
     }
-  if (cs.size() >= 2) c.res.derived = c.text(cs.front()) + " = " + c.text(cs.back());
-  else if (!cs.empty()) c.res.derived = c.text(cs.front());
+  for (const auto& part : parts) {
+    const std::string text = part.size() >= 2 ? c.text(part.front()) + " = " + c.text(part.back())
+                                              : part.empty() ? std::string() : c.text(part.front());
+    c.res.derived += (c.res.derived.empty() ? "" : "; ") + text;
+  }
 
   std::vector<ex> sd = c.sides(claim);
   if (cs.size() < 2) {

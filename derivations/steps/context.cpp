@@ -7,6 +7,7 @@
 #include "derivations/symbolic/functions.hpp"
 #include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/printer.hpp"
+#include "derivations/symbolic/vectors.hpp"
 #include "derivations/symbolic/inspect.hpp"
 
 namespace dc::rules {
@@ -22,7 +23,6 @@ InputError with_line(const Derivation& d, const InputError& e) {
 
 // --- verdicts -------------------------------------------------------------------------
 
-namespace {
 int severity(VerdictKind k) {
   switch (k) {
     case VerdictKind::Proved: return 0;
@@ -32,7 +32,6 @@ int severity(VerdictKind k) {
   }
   return 2;
 }
-}  // namespace
 
 namespace {
 Verdict verdict(VerdictKind kind, const std::string& method) {
@@ -218,6 +217,16 @@ std::vector<Eq> StepContext::equations(const RuleArg& a) const {
   if (r->sides.size() < 2)
     fail(a.pos, "'" + from + "' is an expression, not an equation; a rule can only use equations", a.length);
   std::vector<Eq> out;
+  if (const int k = vector_shape(*r, d.symbols)) {   // a vector equation: one equation per component
+    for (int i = 1; i <= k; ++i) {
+      RuleArg component = a;
+      component.kind = RuleArg::Kind::Equation;
+      component.equation = vector_component(*r, d.symbols, i);
+      component.label = from;
+      for (auto& q : equations(component)) out.push_back(std::move(q));
+    }
+    return out;
+  }
   // The sides with a value: a side whose limit or integral has none (the limit of an abstract
   // function in `v_T = limit(v(t), t, oo) = m*g/b`) is left out, and the others, equal to it
   // and so to each other, still give equations.
@@ -259,26 +268,32 @@ Substitutions StepContext::substitutions(const std::vector<RuleArg>& args, std::
   for (const auto& a : args) {
     if (is_antiderivative(a)) continue;   // instantiated where its integrand is integrated (conv)
     std::size_t n = out.size();
-    const Relation& r = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
-    if (r.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
-    ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
-    // a symbol, an abstract function value v(0), or an application such as sin(theta)
-    auto substitutable = [](const ex& e) {
-      return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e) || pool_function_index(e) >= 0;
-    };
-    const bool forward = substitutable(lhs) && !rhs.has(lhs);
-    if (forward || (substitutable(rhs) && !lhs.has(rhs))) {
-      if (!forward) std::swap(lhs, rhs);
-      // `with f(t) = x` where the file uses d(x): f'(t) is d(x)/d(t) (differential.hpp)
-      const ex dx = differential_of(rhs, d.symbols);
-      if (!dx.is_zero() && pool_function_index(lhs) >= 0 && pool_derivative_order(lhs) == 0 && lhs.nops() == 1) {
-        const ex dt = differential_of(lhs.op(0), d.symbols);
-        if (!dt.is_zero()) out.push_back({lhs.diff(GiNaC::ex_to<GiNaC::symbol>(lhs.op(0))), dx / dt});
+    const Relation& r0 = a.kind == RuleArg::Kind::Label ? claim_of(ref_step(a)) : a.equation;
+    if (r0.sides.size() < 2) fail(a.pos, "'" + a.label + "' is not an equation", a.length);
+    const int vk = vector_shape(r0, d.symbols);   // a vector: one substitution per component
+    for (int component = vk ? 1 : 0; component <= vk; ++component) {
+      const Relation r = vk ? vector_component(r0, d.symbols, component) : r0;
+      ex lhs = conv(r.sides.front()), rhs = conv(r.sides.back());
+      // a symbol, an abstract function value v(0), or an application such as sin(theta)
+      auto substitutable = [](const ex& e) {
+        return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::function>(e) || pool_function_index(e) >= 0;
+      };
+      const bool forward = substitutable(lhs) && !rhs.has(lhs);
+      if (forward || (substitutable(rhs) && !lhs.has(rhs))) {
+        if (!forward) std::swap(lhs, rhs);
+        // `with f(t) = x` where the file uses d(x): f'(t) is d(x)/d(t) (differential.hpp)
+        const ex dx = differential_of(rhs, d.symbols);
+        if (!dx.is_zero() && pool_function_index(lhs) >= 0 && pool_derivative_order(lhs) == 0 && lhs.nops() == 1) {
+          const ex dt = differential_of(lhs.op(0), d.symbols);
+          if (!dt.is_zero()) out.push_back({lhs.diff(GiNaC::ex_to<GiNaC::symbol>(lhs.op(0))), dx / dt});
+        }
+        out.push_back({lhs, rhs});
+      } else if (rest) {
+        rest->push_back({lhs - rhs, ex(), a.label});
+      } else {
+        fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
       }
-      out.push_back({lhs, rhs});
     }
-    else if (rest) rest->push_back({lhs - rhs, ex(), a.label});
-    else fail(a.pos, "expected 'x = value' with a symbol x on one side", a.length);
     for (std::size_t k = n; labels && k < out.size(); ++k) labels->push_back(a.label);
   }
   return out;

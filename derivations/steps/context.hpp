@@ -32,6 +32,9 @@ Verdict undecided(const std::string& method, const std::string& reason);
 Verdict proved(const std::string& method, const std::string& detail = {});
 std::string prefix_method(const std::string& rule_method, const std::string& prove_method);
 
+// How bad a verdict is for the step: proved 0, holds numerically 1, undecided 2, refuted 3.
+int severity(VerdictKind k);
+
 // The worst verdict decides; proved methods are listed once each, in order.
 struct Combiner {
   Verdict worst;

@@ -251,6 +251,13 @@ const SymbolInfo& SymbolTable::declare(SymbolInfo info) {
   return symbols_.back();
 }
 
+bool SymbolTable::set_tex(const std::string& name, std::string tex) {
+  auto it = by_name_.find(name);
+  if (it == by_name_.end()) return false;
+  symbols_[it->second].tex = std::move(tex);
+  return true;
+}
+
 SymbolTable SymbolTable::with_bound_variable(const std::string& name) const {
   SymbolTable t = *this;
   auto it = by_name_.find(name);

@@ -62,6 +62,10 @@ struct SymbolInfo {
   SourcePos pos;             // where it was declared or defined
   bool is_function = false;  // declared as a function of other symbols: v(t)
   bool is_differential = false;  // the differential d(x) of a symbol (differential.hpp)
+  // A vector (`vector v : 3 [m/s]`, vectors.hpp): its number of components (2 or 3) and their
+  // names, each a declared real symbol (or function, for `vector r(t)`) with the same unit.
+  int vector_dim = 0;
+  std::vector<std::string> components;
   std::vector<std::string> params;  // for functions: parameter names
   bool defined_by_step = false;     // introduced by a definition step, not a declaration
 };
@@ -92,6 +96,8 @@ class SymbolTable {
   // Narrow the domain of a declared symbol (same GiNaC symbol): used to test which
   // declaration would make a refuted claim hold. Returns false for an unknown name.
   bool narrow_domain(const std::string& name, const Domain& d);
+  // Replace the TeX name of `name` (`notation arrows` for vectors); false for an unknown name.
+  bool set_tex(const std::string& name, std::string tex);
   const std::vector<Constraint>& constraints() const { return constraints_; }
   // A copy in which `name` is a fresh real symbol without domain or assumed relations: the
   // dummy variable of an integral, which must not inherit what is declared of the quantity of

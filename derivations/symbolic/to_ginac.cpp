@@ -29,29 +29,10 @@
 #include "derivations/symbolic/inspect.hpp"
 #include "derivations/symbolic/integral_atom.hpp"
 #include "derivations/symbolic/symbols.hpp"
+#include "derivations/symbolic/vectors.hpp"
 #include "derivations/syntax/units.hpp"
 
 namespace dc {
-
-GiNaC::numeric exact_literal(std::string_view literal) {
-  std::string digits;
-  digits.reserve(literal.size());
-  int frac = 0;
-  bool after_point = false;
-  for (char c : literal) {
-    if (c == '.') {
-      after_point = true;
-      continue;
-    }
-    digits += c;
-    if (after_point) ++frac;
-  }
-  std::size_t nz = digits.find_first_not_of('0');
-  digits = nz == std::string::npos ? "0" : digits.substr(nz);
-  GiNaC::numeric value(cln::cl_I(digits.c_str()));
-  if (frac > 0) value = value / GiNaC::numeric(10).power(frac);
-  return value;
-}
 
 namespace {
 
@@ -771,7 +752,9 @@ class Dimensioner {
 
 }  // namespace
 
-GiNaC::ex to_ginac(const Node& n, const SymbolTable& table) { return Converter(table).conv(n); }
+GiNaC::ex to_ginac(const Node& n, const SymbolTable& table) {
+  return Converter(table).conv(has_vector_notation(n, table) ? scalar_form(n, table) : n);   // vectors.hpp
+}
 
 Integrand integrand_of(const Node& n, const SymbolTable& table) {
   check_count(n, 4, 4, "4 arguments: integral(f, x, a, b)");
@@ -785,7 +768,15 @@ Integrand integrand_of(const Node& n, const SymbolTable& table) {
   return out;
 }
 
-Dimension dimension_of(const Node& n, const SymbolTable& table) { return Dimensioner(table).dim(n); }
+Dimension dimension_of(const Node& n, const SymbolTable& table) {
+  if (!has_vector_notation(n, table)) return Dimensioner(table).dim(n);
+  const int k = vector_shape(n, table);   // a vector's dimension: that of every component
+  const Dimension d = Dimensioner(table).dim(k ? vector_component(n, table, 1) : scalar_form(n, table));
+  for (int i = 2; i <= k; ++i)
+    if (Dimensioner(table).dim(vector_component(n, table, i)) != d)
+      throw InputError(n.pos, "the components of a vector must have one dimension (the first is " + d.to_string() + ")", n.length);
+  return d;
+}
 
 namespace { CalculusHooks g_calculus_hooks; }  // namespace
 

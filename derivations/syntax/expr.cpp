@@ -24,7 +24,7 @@ namespace {
 
 constexpr int kHardMaxDepth = 1000;
 
-enum class Tok { Number, Ident, Plus, Minus, PlusMinus, MinusPlus, Star, Slash, Caret, LParen, RParen, Comma, Equals, Degree, End };
+enum class Tok { Number, Ident, Plus, Minus, PlusMinus, MinusPlus, Star, Slash, Caret, LParen, RParen, LBracket, RBracket, Comma, Equals, Degree, End };
 
 struct Token {
   Tok kind = Tok::End;
@@ -147,7 +147,9 @@ class Lexer {
                                   std::string(text_.substr(i, std::min<std::size_t>(8, n - i))));
             fail(line, col, "unexpected character '.'");
             break;
-          case '[': case ']': case '{': case '}':
+          case '[': t.kind = Tok::LBracket; break;   // a vector literal [a, b, c]
+          case ']': t.kind = Tok::RBracket; break;
+          case '{': case '}':
             fail(line, col, std::string("unexpected character '") + c + "'; use '(' and ')' for grouping");
             break;
           default:
@@ -241,10 +243,10 @@ class Parser {
   void check_paren_depth() const {
     int depth = 0;
     for (const Token& t : toks_) {
-      if (t.kind == Tok::LParen) {
+      if (t.kind == Tok::LParen || t.kind == Tok::LBracket) {
         if (++depth > max_depth_)
           fail(t, "parentheses nested too deeply (limit " + std::to_string(max_depth_) + ")");
-      } else if (t.kind == Tok::RParen && depth > 0) {
+      } else if ((t.kind == Tok::RParen || t.kind == Tok::RBracket) && depth > 0) {
         --depth;
       }
     }
@@ -416,7 +418,31 @@ class Parser {
     fail(t, msg);
   }
 
-  // atom := number | identifier | identifier '(' args ')' | '(' sum ')'
+  // The comma-separated arguments after `open`, up to the `close` token, into p (a call or a
+  // vector literal); `closing` says what was expected.
+  void arguments(Parsed& p, const Token& open, Tok close, const std::string& closing) {
+    enter(open);
+    int depth = 1;
+    while (true) {
+      Parsed a = sum();
+      depth = std::max(depth, a.depth + 1);
+      p.node.args.push_back(std::move(a.node));
+      if (peek().kind == Tok::Comma) {
+        next();
+        continue;
+      }
+      if (peek().kind == close) break;
+      fail(peek(), "expected ',' or " + closing + ", found " + describe(peek()));
+    }
+    leave();
+    const Token& end = next();
+    p.depth = depth;
+    p.end = end.end;
+    p.end_line = end.line;
+    p.node.length = length_of(p);
+  }
+
+  // atom := number | identifier | identifier '(' args ')' | '(' sum ')' | '[' sum ',' sum [',' sum] ']'
   Parsed atom() {
     const Token& t = peek();
     Parsed p;
@@ -440,28 +466,21 @@ class Parser {
         }
         p.node.kind = NodeKind::Call;
         const Token& open = next();
-        enter(open);
-        int depth = 1;
         if (peek().kind == Tok::RParen)
           fail(peek(), "expected an argument of '" + p.node.text + "', found ')'");
-        while (true) {
-          Parsed a = sum();
-          depth = std::max(depth, a.depth + 1);
-          p.node.args.push_back(std::move(a.node));
-          if (peek().kind == Tok::Comma) {
-            next();
-            continue;
-          }
-          if (peek().kind == Tok::RParen) break;
-          fail(peek(), "expected ',' or ')' to close '(' of " + p.node.text + "(...) opened at " +
-                           std::to_string(open.line) + ":" + std::to_string(open.col) + ", found " + describe(peek()));
-        }
-        leave();
-        const Token& close = next();
-        p.depth = depth;
-        p.end = close.end;
-        p.end_line = close.line;
-        p.node.length = length_of(p);
+        arguments(p, open, Tok::RParen,
+                  "')' to close '(' of " + p.node.text + "(...) opened at " + std::to_string(open.line) + ":" +
+                      std::to_string(open.col));
+        return p;
+      }
+      case Tok::LBracket: {   // [a, b] or [a, b, c]: the vector literal vec(a, b, c)
+        const Token& open = next();
+        p.node.kind = NodeKind::Call;
+        p.node.text = "vec";
+        arguments(p, open, Tok::RBracket,
+                  "']' to close the vector '[' opened at " + std::to_string(open.line) + ":" + std::to_string(open.col));
+        if (p.node.args.size() < 2 || p.node.args.size() > 3)
+          fail(open, "a vector has 2 or 3 components, found " + std::to_string(p.node.args.size()));
         return p;
       }
       case Tok::LParen: {
@@ -572,6 +591,15 @@ void emit(const Node& n, std::string& out) {
         }
         break;
       }
+      if (n.text == "vec") {
+        out += '[';
+        for (std::size_t i = 0; i < n.args.size(); ++i) {
+          if (i) out += ", ";
+          emit(n.args[i], out);
+        }
+        out += ']';
+        break;
+      }
       out += n.text;
       out += '(';
       for (std::size_t i = 0; i < n.args.size(); ++i) {
@@ -599,9 +627,9 @@ void emit(const Node& n, std::string& out) {
   if (n.parenthesized) out += ')';
 }
 
-constexpr std::array<std::string_view, 15> kBuiltins = {"sqrt", "exp",  "log",  "ln",   "sin",  "cos",  "tan",
+constexpr std::array<std::string_view, 19> kBuiltins = {"sqrt", "exp",  "log",  "ln",   "sin",  "cos",  "tan",
                                                         "asin", "acos", "atan", "abs",  "diff", "limit", "integral",
-                                                        "eval_between"};
+                                                        "eval_between", "dot", "cross", "norm", "vec"};
 
 }  // namespace
 

@@ -273,7 +273,9 @@ TEST_CASE("syntax errors name what was expected, at the offending character", "[
       {"", 1, 1, "expected an expression, found end of expression"},
       {"a *", 1, 4, "expected an expression after '*', found end of expression"},
       {"()", 1, 2, "expected an expression after '(', found ')'"},
-      {"[a]", 1, 1, "unexpected character '['; use '(' and ')' for grouping"},
+      {"[a]", 1, 1, "a vector has 2 or 3 components, found 1"},
+      {"{a}", 1, 1, "unexpected character '{'; use '(' and ')' for grouping"},
+      {"[a, b", 1, 6, "expected ',' or ']' to close the vector '[' opened at 1:1, found end of expression"},
       {"a * +b", 1, 5, "expected an expression after '*', found '+'"},
   };
   for (const Case& c : cases) {

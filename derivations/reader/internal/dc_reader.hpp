@@ -32,9 +32,12 @@ inline const std::vector<std::string> kRuleNames = {"given",  "definition", "rew
                                                     "coefficients"};
 inline const std::vector<std::string> kRewriteAliases = {"simplify", "expand", "factor", "algebra"};
 inline const std::vector<std::string> kRuleKeywords = {"for", "into", "of", "with", "wrt", "from"};
-inline const std::vector<std::string> kStatementKeywords = {"title", "handout", "section", "symbol", "function", "assume",
+inline const std::vector<std::string> kStatementKeywords = {"title", "handout", "section", "symbol", "function", "vector", "assume",
                                                             "heading", "text", "remark", "figure", "notation"};
 inline const std::vector<std::string> kAttributeKeywords = {"by", "note", "erratum", "stable", "hide", "tex"};
+
+// The default TeX name of a vector: \mathbf{r}_{0} (command "\\mathbf") for r0 (dc_vectors.cpp).
+std::string vector_tex(const std::string& command, const std::string& name);
 
 inline bool contains(const std::vector<std::string>& v, const std::string& s) {
   return std::find(v.begin(), v.end(), s) != v.end();
@@ -162,6 +165,10 @@ class DcReader {
 
   // --- symbol / function (dc_declarations.cpp) ---------------------------------------------
   void symbol_statement(const Span& s, bool is_function);
+  void vector_statement(const Span& s);   // dc_vectors.cpp
+  std::vector<std::string> parameters(const Span& s, std::size_t& p, const std::string& owner);
+  bool vector_arrows_ = false;                     // `notation arrows`
+  std::vector<std::string> default_vector_tex_;    // vectors declared without a tex
 
   // --- assume (dc_declarations.cpp) --------------------------------------------------------
   void assume_statement(const Span& s, const SourcePos& at);
