@@ -7,6 +7,7 @@
 
 #include "derivations/calculus/install.hpp"
 #include "derivations/document/reader.hpp"
+#include "derivations/symbolic/vectors.hpp"
 #include "derivations/syntax/io.hpp"
 
 namespace dc {
@@ -303,11 +304,20 @@ void DocumentReader::parse_all_rows() {
         r.not_read = e.message();
         r.not_read_pos = e.pos();
       }
-      // a name written bold is another quantity than the same letter in italic
-      for (const auto& v : r.tex.vector_names) r.vectors.insert(v + "_vec");
-      if (!r.vectors.empty())
-        for (auto& ch : r.tex.chains)
-          for (auto& side : ch.sides) rename_vectors(side, r.tex.vector_names);
+      // a name written bold is another quantity than the same letter in italic, unless a
+      // directive declares it a vector (`vector p : 3 [kg*m/s]`): then it is that vector
+      std::set<std::string> undeclared;
+      for (const auto& v : r.tex.vector_names) {
+        const SymbolInfo* s = d_.symbols.find(v);
+        if (s && s->vector_dim) continue;
+        undeclared.insert(v);
+        r.vectors.insert(v + "_vec");
+      }
+      for (auto& ch : r.tex.chains)
+        for (auto& side : ch.sides) {
+          if (!undeclared.empty()) rename_vectors(side, undeclared);
+          if (undeclared.size() < r.tex.vector_names.size()) vector_products(side);
+        }
       rows_.push_back(std::move(r));
     }
   }
@@ -680,6 +690,37 @@ bool DocumentReader::subset(const std::vector<std::string>& a, const std::vector
   for (const auto& x : a)
     if (std::find(b.begin(), b.end(), x) == b.end()) return false;
   return true;
+}
+
+// u \cdot w and u \times w between two declared vectors: dot(u, w), cross(u, w) (the product
+// binds its neighbouring factors: m u \cdot w is m (u . w)).
+void DocumentReader::vector_products(Node& n) const {
+  for (auto& a : n.args) vector_products(a);
+  if (n.kind != NodeKind::Mul) return;
+  const bool cross = n.text == "times";
+  Node& left = n.args[0].kind == NodeKind::Mul && !n.args[0].parenthesized ? n.args[0].args[1] : n.args[0];
+  int a = 0, b = 0;
+  try {
+    a = vector_shape(left, d_.symbols);
+    b = vector_shape(n.args[1], d_.symbols);
+  } catch (const InputError&) {
+    return;   // reported when the row is checked
+  }
+  if (!a || !b) return;
+  Node product;
+  product.kind = NodeKind::Call;
+  product.text = cross ? "cross" : "dot";
+  product.pos = left.pos;
+  product.args = {left, n.args[1]};
+  if (&left == &n.args[0]) {
+    product.parenthesized = n.parenthesized;
+    n = std::move(product);
+  } else {
+    n.args[0].args[1] = std::move(product);
+    Node outer = std::move(n.args[0]);
+    outer.parenthesized = n.parenthesized;
+    n = std::move(outer);
+  }
 }
 
 void DocumentReader::rename_vectors(Node& n, const std::set<std::string>& vectors) {

@@ -139,6 +139,7 @@ class DocumentReader {
   static bool subset(const std::vector<std::string>& a, const std::vector<std::string>& b);
 
   static void rename_vectors(Node& n, const std::set<std::string>& vectors);
+  void vector_products(Node& n) const;
 
   static void add_all(std::vector<std::string>& out, const std::vector<std::string>& more);
 

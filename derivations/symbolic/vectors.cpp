@@ -145,7 +145,7 @@ class Vectors {
                   n.length);
     if (n.kind == NodeKind::Number || n.kind == NodeKind::Symbol) return n;
     if (is_call(n, "dot")) return grouped(dot(n.args[0], n.args[1], n.pos));
-    if (is_call(n, "norm")) {
+    if (is_call(n, "norm") || (is_call(n, "abs") && n.args.size() == 1 && shape(n.args[0]))) {   // |v|
       Node out = leaf(NodeKind::Call, "sqrt", n.pos);
       out.args.push_back(dot(n.args[0], n.args[0], n.pos));
       out.length = n.length;
@@ -195,6 +195,7 @@ class Vectors {
       if (a != b) shape_error(n.pos, f + " of vectors of " + std::to_string(a) + " and " + std::to_string(b) + " components", n.length);
       return f == "cross" && a == 3 ? 3 : 0;
     }
+    if (f == "abs" && n.args.size() == 1 && shape(n.args[0])) return 0;   // |v|, the length
     if (f == "norm") {
       if (n.args.size() != 1 || shape(n.args[0]) == 0)
         shape_error(n.pos, "norm(v) takes one vector", n.length);

@@ -184,3 +184,26 @@ TEST_CASE("document reader: a row after `= 0` continues the quantity, not the 0"
   REQUIRE(first);
   CHECK(first->claim_text == "m*u - M*w = m*a - M*b");
 }
+
+TEST_CASE("document vectors: declared vectors are read as vectors, undeclared bold names are not", "[document]") {
+  const std::string declared =
+      "---\n"                                                               // 1
+      "derivcheck: symbol m : positive [kg]\n"                             // 2
+      "derivcheck: vector r : 3 [m]\n"                                     // 3
+      "derivcheck: vector p, v : 3 [kg*m/s]\n"                             // 4
+      "derivcheck: vector L : 3 [kg*m^2/s]\n"                              // 5
+      "---\n"                                                               // 6
+      "$$\\mathbf{L} = \\mathbf{r} \\times \\mathbf{p}$$\n"        // 7
+      "$$\\mathbf{r} \\cdot \\mathbf{L} = 0$$\n"                     // 8
+      "$$\\mathbf{p} \\cdot \\mathbf{L} = 1$$\n"                     // 9
+      "$$|\\mathbf{L}|^2 = |\\mathbf{r}|^2 |\\mathbf{p}|^2 - (\\mathbf{r} \\cdot \\mathbf{p})^2$$\n";   // 10
+  auto rows = check("v.md", declared, true);
+  CHECK(at(rows, 7).verdict == "premise");
+  CHECK(at(rows, 8).verdict == "proved");
+  CHECK(at(rows, 9).verdict != "proved");
+  CHECK(at(rows, 10).verdict == "proved");
+  const std::string undeclared = "$$\\mathbf{L} = \\mathbf{r} \\times \\mathbf{p}$$\n";
+  auto plain = check("u.md", undeclared, true);
+  CHECK(at(plain, 1).verdict == "undecided");
+  CHECK(at(plain, 1).reason.find("not linear in the vectors") != std::string::npos);
+}

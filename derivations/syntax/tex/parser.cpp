@@ -648,11 +648,8 @@ Parsed Parser::term(bool operand) {
     if (!operand && (t.is('*') || t.is_cs("cdot") || t.is_cs("times"))) {
       const Token& op = next();
       Parsed right = signed_factor();
-      const Node& l = left.node.kind == NodeKind::Mul && !left.node.parenthesized ? left.node.args[1] : left.node;
-      if (op.is_cs("times") && l.kind == NodeKind::Symbol && right.node.kind == NodeKind::Symbol &&
-          row_.vector_names.count(l.text) && row_.vector_names.count(right.node.text))
-        fail(op, "\\times between two vectors (a cross product) is not read yet");
       left = binary(NodeKind::Mul, std::move(left), std::move(right), op);
+      if (op.is_cs("times")) left.node.text = "times";   // between two vectors, a cross product
       continue;
     }
     if (!operand && (t.is('/') || t.is_cs("div"))) {
