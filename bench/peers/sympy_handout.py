@@ -521,6 +521,18 @@ def _():
     return zero(oblique_solve()[v2np] - (m1 * v1n + m2 * v2n - e * m1 * (v2n - v1n)) / (m1 + m2))
 
 
+@claim(F08, "velocity1_after", "solve the 4 equations, both components")
+def _():
+    sol = oblique_solve()
+    return zero(sol[v1np] - (m1 * v1n + m2 * v2n - e * m2 * (v1n - v2n)) / (m1 + m2)) and zero(sol[v1tp] - v1t)
+
+
+@claim(F08, "velocity2_after", "solve the 4 equations, both components")
+def _():
+    sol = oblique_solve()
+    return zero(sol[v2np] - (m1 * v1n + m2 * v2n - e * m1 * (v2n - v1n)) / (m1 + m2)) and zero(sol[v2tp] - v2t)
+
+
 @claim(F08, "wall_n", "subs + limit m2 -> oo")
 def _():
     f = v1np_sol.subs({v1n: vv1 * sp.cos(th1), v2n: 0})

@@ -5,6 +5,8 @@
 //   vector r(t) : 3 [m]                          a vector function: r_x(t), r_y(t), r_z(t)
 //   vector p : 3 [kg*m/s] tex "\vec{p}"
 //
+// A component name that is already a symbol of the vector's unit is that symbol (the author
+// wrote the components first); any other clash is an input error.
 // Each component is declared as a real symbol (a function of the same arguments for a vector
 // function) with the vector's unit; the vector itself is a table entry that only the vector
 // rewriting reads (symbolic/vectors.hpp).
@@ -123,9 +125,16 @@ void DcReader::vector_statement(const Span& s) {
     for (const auto& c : parts) v.components.push_back(c.name);
     d_.symbols.declare(v);
     for (const auto& c : parts) {
+      // a component already declared as a quantity of the vector's unit (symbol v1np : real
+      // [m/s], then vector v1p : 2 [m/s] components v1np, v1tp) is adopted as it is
+      if (const SymbolInfo* old = d_.symbols.find(c.name);
+          old && !old->vector_dim && !old->is_differential && old->is_function == v.is_function &&
+          old->params == params && old->has_dimension && old->dimension == dimension)
+        continue;
       if (is_reserved_name(c.name) || d_.symbols.find(c.name))
-        fail(c.pos, "the component '" + c.name + "' of vector '" + v.name + "' is already a name; name the components: '" +
-                        "vector " + v.name + " : " + std::to_string(dim) + " [...] components a, b" + (dim == 3 ? ", c'" : "'"),
+        fail(c.pos, "the component '" + c.name + "' of vector '" + v.name + "' is already a name of another kind or unit; " +
+                        "name the components: 'vector " + v.name + " : " + std::to_string(dim) + " [...] components a, b" +
+                        (dim == 3 ? ", c'" : "'"),
              static_cast<int>(v.name.size()));
       SymbolInfo ci;
       ci.name = c.name;

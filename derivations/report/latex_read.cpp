@@ -372,6 +372,17 @@ class LatexReader {
   Node primary() {
     skip_ws();
     if (at_end()) fail("expected an expression");
+    if (accept("\\begin{pmatrix}")) {   // a vector literal, one component per row
+      std::vector<Node> rows;
+      for (;;) {
+        rows.push_back(expr());
+        skip_ws();
+        if (accept("\\\\")) continue;
+        expect("\\end{pmatrix}");
+        break;
+      }
+      return call("vec", std::move(rows));
+    }
     char c = peek();
     if (std::isdigit(static_cast<unsigned char>(c))) {
       std::size_t st = i_;

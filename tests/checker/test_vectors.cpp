@@ -107,8 +107,10 @@ TEST_CASE("vectors: shape errors are positioned input errors", "[vectors]") {
   CHECK(input_error(decl + "s: sin(v) = m\n    by given\n").find("must be a number, not a vector") != std::string::npos);
   CHECK(input_error(decl + "s: dot(v, q) = m\n    by given\n").find("vectors of 3 and 2 components") != std::string::npos);
   CHECK(input_error("vector v : 4 [m]\ns: v = v\n    by given\n").find("2 or 3") != std::string::npos);
-  CHECK(input_error("symbol v_x : real [m]\nvector v : 2 [m]\ns: v = v\n    by given\n")
-            .find("the component 'v_x' of vector 'v' is already a name") != std::string::npos);
+  CHECK(input_error("symbol v_x : real [s]\nvector v : 2 [m]\ns: v = v\n    by given\n")
+            .find("the component 'v_x' of vector 'v' is already a name of another kind or unit") != std::string::npos);
+  // a component of the vector's unit declared before is adopted
+  CHECK(input_error("symbol v_x : real [m]\nvector v : 2 [m]\ns: v = v\n    by given\n") == "no error");
   CHECK(input_error("symbol x : real [m]\ns: [x, x, x, x] = [x, x, x, x]\n    by given\n").find("2 or 3 components") !=
         std::string::npos);
 }
