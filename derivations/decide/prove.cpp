@@ -104,8 +104,25 @@ std::optional<ex> integer_radical(const numeric& n, const numeric& r) {
 
 // b^r for a rational r that is not an integer, with the factors whose sign the declarations
 // fix taken out: (c*y)^r = c^r * y^r for c > 0 (the principal branch: arg(c*y) = arg(y)),
-// (f^k)^r = f^(k r) for f > 0 and real k, and rational c reduced (sqrt(12) = 2*sqrt(3)).
-ex power_split(const ex& b, const numeric& r, const SymbolTable& ctx) {
+// (f^k)^r = f^(k r) for f > 0 and real k, and rational c reduced (sqrt(12) = 2*sqrt(3)). A
+// sum is factored first, so sqrt(m^2*a^2 + m^2*b^2) = m*sqrt(a^2 + b^2) for m > 0 (only small
+// polynomial sums: factorisation is costly).
+ex power_split(const ex& b_in, const numeric& r, const SymbolTable& ctx) {
+  ex b = b_in;
+  if (GiNaC::is_a<GiNaC::add>(b_in) && b_in.nops() <= 24) try {
+      GiNaC::lst syms;
+      for (GiNaC::const_preorder_iterator it = b_in.preorder_begin(); it != b_in.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) syms.append(*it);
+      if (b_in.is_polynomial(syms)) {
+        // a numeric content apart: GiNaC distributes 4*(a^2 + b^2) back into the sum
+        const numeric c = b_in.integer_content();
+        if (c.is_positive() && c != 1)
+          return power_split(c, r, ctx) * power_split(GiNaC::expand(b_in / c), r, ctx);
+        const ex f = GiNaC::factor(b_in);
+        if (GiNaC::is_a<GiNaC::mul>(f)) b = f;
+      }
+    } catch (const std::exception&) {
+    }
   auto atom = [&](const ex& f) -> std::optional<ex> {   // f^r when f > 0 gives a simpler form
     if (GiNaC::is_a<numeric>(f)) {
       const numeric& c = GiNaC::ex_to<numeric>(f);
