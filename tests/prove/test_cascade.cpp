@@ -75,6 +75,23 @@ TEST_CASE("stage 2: log and exp rules on positive symbols", "[prove][transcenden
   }
 }
 
+TEST_CASE("stage 2: a root of a factorable sum takes out its positive factors", "[prove][transcendental]") {
+  test::Table T = standard_table();
+  ex a = T["a"], x = T["x"], y = T["y"];
+  // numeric content: sqrt(4 x^2 + 4 y^2) = 2 sqrt(x^2 + y^2), for any real x, y
+  Verdict v = prove_equal(GiNaC::sqrt(4 * x * x + 4 * y * y), 2 * GiNaC::sqrt(x * x + y * y), T.t);
+  CAPTURE(describe(v));
+  CHECK(v.kind == VerdictKind::Proved);
+  // a positive factor: sqrt(a^2 x^2 + a^2 y^2) = a sqrt(x^2 + y^2) for a > 0
+  Verdict w = prove_equal(GiNaC::sqrt(a * a * x * x + a * a * y * y), a * GiNaC::sqrt(x * x + y * y), T.t);
+  CAPTURE(describe(w));
+  CHECK(w.kind == VerdictKind::Proved);
+  // the same with a real factor is false (x < 0): never proved
+  Verdict u = prove_equal(GiNaC::sqrt(x * x * a * a + x * x * y * y), x * GiNaC::sqrt(a * a + y * y), T.t);
+  CAPTURE(describe(u));
+  CHECK(u.kind == VerdictKind::Refuted);
+}
+
 TEST_CASE("stage 3: side relations", "[prove][side-relations]") {
   test::Table T = standard_table();
   ex x = T["x"];
