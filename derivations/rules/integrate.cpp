@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 
+#include "derivations/calculus/definite.hpp"
 #include "derivations/calculus/integral_equal.hpp"
 #include "derivations/symbolic/differential.hpp"
 #include "derivations/symbolic/functions.hpp"
@@ -30,6 +31,38 @@ std::vector<Eq> at_points(const std::vector<Eq>& eqs, const ex& t, const std::ve
     for (const auto& q : eqs)
       if (has_application_at(q.e, t)) out.push_back({q.e.subs(t == p), ex(), q.from});
   return out;
+}
+
+// integral(f, x, a, b) = G when a reference mentions the upper limit b: the integrand's declared
+// functions replaced by what the references give them (`F(t) = expr` with t the rule's
+// variable), the integral computed as a function of b by the definite-integral methods, and
+// each closed form must follow from that value and the references (which may pin b). An
+// integrand the references do not make explicit, or an integral the methods cannot compute,
+// leaves the step undecided.
+Verdict integral_through_references(StepContext& c, const Relation& claim, const Integrand& in, const ex& a,
+                                    const ex& b, const ex& t, const std::vector<Eq>& ref_eqs, const ThroughT& through_t) {
+  ex f = in.f;
+  for (const auto& q : ref_eqs)
+    if (pool_function_index(q.hint) >= 0 && pool_derivative_order(q.hint) == 0 && q.hint.nops() == 1 &&
+        q.hint.op(0).is_equal(t))
+      f = f.subs(q.hint.subs(t == in.x) == (q.hint - q.e).subs(t == in.x), GiNaC::subs_options::no_pattern);
+  const std::string why = "a reference mentions the upper limit " + c.text(b) + ", so the derivative test (which needs " +
+                          c.text(b) + " free) does not apply";
+  if (detail::has_abstract_application(f))
+    return undecided("integrate", why + ", and the references do not give the integrand explicitly");
+  const integrals::Definite value =
+      integrals::definite_integral(f, GiNaC::ex_to<GiNaC::symbol>(in.x), a, 0, b, 0, in.table);
+  if (value.kind != integrals::Definite::Kind::Value)
+    return undecided("integrate", why + ", and the integral of " + c.text(f) + " was not computed" +
+                                      (value.why.empty() ? std::string() : ": " + value.why));
+  c.res.derived = "integral = " + c.text(value.value);
+  Combiner all;
+  for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+    Verdict v = follows(c, c.conv(through_t.resolve(resolve_definitions(c.d, claim.sides[i]))), value.value, ref_eqs);
+    v.method = prefix_method("the integral as a function of " + c.text(b), v.method);
+    all.add(v, claim.sides.size() > 2 ? "side " + std::to_string(i + 1) : "");
+  }
+  return all.result();
 }
 
 // integral(f, x, a, b) = G (side0 is the integral, resolved).
@@ -56,6 +89,12 @@ Verdict definite_integral(StepContext& c, const Relation& claim, const Node& sid
     c.fail(side0.args[3].pos, "the upper limit of the integral must be a symbol (it is differentiated)",
            side0.args[3].length);
   if (claim.sides.size() < 2) c.fail(c.s.claim_pos, "expected 'integral(f, x, a, b) = G'");
+  // The derivative test below treats the upper limit b as free. A reference that mentions b pins
+  // it (T = 2*pi/omega: dG/dT = f(T) would be checked at one T only, and sin(omega*t/2) from 0
+  // to T "integrates" to 0) or makes the integrand depend on it (F(t) = F0*t/T): the integral
+  // is then computed as a function of b instead.
+  for (const auto& q : ref_eqs)
+    if (q.e.has(b)) return integral_through_references(c, claim, in, a, b, t, ref_eqs, through_t);
   std::vector<Eq> eqs = at_points(ref_eqs, t, {b, a});
   const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
   Combiner all;
@@ -167,6 +206,29 @@ std::optional<Verdict> change_form(StepContext& c, const Relation& claim, const 
            rule.point->length);
   const GiNaC::symbol& bs = GiNaC::ex_to<GiNaC::symbol>(b);
   const ex Ya = ode.Y.subs(t == a), Yb = ode.Y.subs(t == b);
+  // A reference that mentions the end b pins it (t2 = 2*pi/omega): the derivative test in b
+  // would hold at that b only. The change is then the integral of f from a to b, computed as a
+  // function of b, and each side must follow from it and the references.
+  for (const auto& q : ref_eqs) {
+    if (!q.e.has(b)) continue;
+    const std::string why = "a reference mentions the end " + c.text(b) + ", so the derivative test (which needs " +
+                            c.text(b) + " free) does not apply";
+    if (detail::has_abstract_application(ode.f))
+      return undecided("integrate", why + ", and the right side of the ODE is not explicit");
+    const GiNaC::symbol s("s_" + c.text(t));   // the variable of integration, unknown to the table
+    const integrals::Definite value = integrals::definite_integral(ode.f.subs(t == s), s, a, 0, b, 0, c.d.symbols);
+    if (value.kind != integrals::Definite::Kind::Value)
+      return undecided("integrate", why + ", and the integral of " + c.text(ode.f) + " was not computed" +
+                                        (value.why.empty() ? std::string() : ": " + value.why));
+    c.res.derived = c.text(Yb) + " - " + c.text(Ya) + " = " + c.text(value.value);
+    Combiner all;
+    for (std::size_t i = 1; i < claim.sides.size(); ++i) {
+      Verdict v = follows(c, c.conv(claim.sides[i]), value.value, ref_eqs);
+      v.method = prefix_method("the change as a function of " + c.text(b), v.method);
+      all.add(v, claim.sides.size() > 2 ? "side " + std::to_string(i + 1) : "");
+    }
+    return all.result();
+  }
   const std::vector<Eq> at_ends = at_points(ref_eqs, t, {b, a});
   const bool f_continuous = continuous_everywhere(ode.f, ts);
   Combiner all;

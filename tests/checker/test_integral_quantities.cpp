@@ -130,3 +130,40 @@ TEST_CASE("a cited antiderivative is instantiated as F(b) - F(a), never used as 
   CHECK(d.kind("zero") != K::Proved);
   CHECK(d.kind("zero") != K::HoldsNumerically);
 }
+
+TEST_CASE("integrate: a reference that mentions the upper limit is no licence for the derivative test", "[integrate]") {
+  // d/dT of a closed form checked against the integrand at T is valid only for T free: a
+  // reference that pins T (a period) or makes the integrand depend on T (F(t) = F0*t/T) made
+  // false claims pass. The integral is computed as a function of T instead.
+  using K = dc::VerdictKind;
+  test_support::Checked c = test_support::check_text(
+      "symbol t, T : positive [s]\n"
+      "symbol t2 : positive [s]\n"
+      "symbol omega : positive [1/s]\n"
+      "symbol F0 : positive [N]\n"
+      "function F(t) : real [N]\n"
+      "function A(t) : real [1]\n"
+      "period: T = 2*pi/omega\n    by given\n"
+      "over_period: integral(sin(omega*t), t, 0, T) = 0\n    by integrate period wrt t\n"
+      "half_period_slip: integral(sin(omega*t/2), t, 0, T) = 0\n    by integrate period wrt t\n"
+      "half_period: integral(sin(omega*t/2), t, 0, T) = 4/omega\n    by integrate period wrt t\n"
+      "ramp: F(t) = F0*t/T\n    by given\n"
+      "impulse: integral(F(t), t, 0, T) = F0*T/2\n    by integrate ramp wrt t\n"
+      "impulse_slip: integral(F(t), t, 0, T) = F0*T\n    by integrate ramp wrt t\n"
+      "rate: diff(A(t), t) = omega*sin(omega*t/2)\n    by given\n"
+      "end: t2 = 2*pi/omega\n    by given\n"
+      "change_slip: A(t2) - A(0) = 0\n    by integrate rate, end wrt t from 0\n"
+      "change: A(t2) - A(0) = 4\n    by integrate rate, end wrt t from 0\n",
+      "limits.dc");
+  CHECK(c.kind("over_period") == K::Proved);
+  CHECK(c.kind("half_period_slip") == K::Refuted);
+  CHECK(c.kind("half_period") == K::Proved);
+  CHECK(c.kind("impulse") == K::Proved);
+  CHECK(c.kind("impulse_slip") == K::Refuted);
+  CHECK(c.kind("change_slip") == K::Refuted);
+  CHECK(c.kind("change") == K::Proved);
+  for (const char* label : {"over_period", "half_period", "impulse", "change"}) {
+    CAPTURE(label);
+    CHECK(c.at(label).errors.empty());
+  }
+}
