@@ -20,6 +20,12 @@ struct Checked {
     return sum.results.at(0);
   }
   dc::VerdictKind kind(const std::string& label) const { return at(label).verdict.kind; }
+  // Does the step report an error whose message contains `part`?
+  bool has_error(const std::string& label, const std::string& part) const {
+    for (const auto& e : at(label).errors)
+      if (e.message().find(part) != std::string::npos) return true;
+    return false;
+  }
 };
 
 inline Checked check_text(const std::string& body, const std::string& file = "inline.dc") {
