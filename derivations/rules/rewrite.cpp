@@ -18,6 +18,7 @@ Verdict rewrite(StepContext& c, const Relation& claim) {
   }
   std::vector<Eq> eqs = c.all_equations(c.rule().refs);
   for (auto& q : eqs) apply_to(q, subs, labels);
+  add_path_differentials(c, sd, eqs);
   return links_follow(c, sd, eqs, c.rule().refs.empty() ? "identity" : "rewrite");
 }
 

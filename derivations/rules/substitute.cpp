@@ -56,6 +56,7 @@ Verdict substitute(StepContext& c, const Relation& claim) {
   }
 
   std::vector<ex> sd = c.sides(claim);
+  add_path_differentials(c, sd, eqs);
   if (cs.size() < 2) {
     // substituting into an expression: the claim must be that expression
     if (sd.size() != 1) c.fail(rule.into[0].pos, "'" + into.label + "' is an expression; the claim must be one too");

@@ -341,6 +341,37 @@ void apply_to(Eq& q, const Substitutions& subs, const std::vector<std::string>& 
     if (used[i]) q.also.push_back(labels[i]);
 }
 
+void add_path_differentials(const StepContext& c, const std::vector<ex>& claim, std::vector<Eq>& eqs) {
+  bool differential = false;
+  for (const auto& e : claim) differential = differential || !differentials_in(e, c.d.symbols).empty();
+  if (!differential) return;
+  // the changes this step speaks of: the differentials in the claim and the cited equations;
+  // any other quantity's change is an unknown of its own (never a drawn value: a counterexample
+  // that needs it is no counterexample to what the author wrote)
+  GiNaC::lst spoken;
+  for (const auto& e : claim) spoken.append(e);
+  for (const auto& q : eqs) spoken.append(q.e);
+  std::map<ex, ex, GiNaC::ex_is_less> unknown_change;
+  std::vector<Eq> more;
+  for (const auto& q : eqs) {
+    if (!differentials_in(q.e, c.d.symbols).empty()) continue;
+    ex total = 0;
+    for (const auto& z : c.symbols_in({q.e})) {
+      if (!GiNaC::is_a<GiNaC::symbol>(z)) continue;
+      ex dz = differential_of(z, c.d.symbols);
+      if (dz.is_zero() || !ex(spoken).has(dz)) {
+        auto [it, fresh] = unknown_change.emplace(z, ex());
+        // (named apart from d(z): a counterexample that needs it cannot be read back as a point)
+        if (fresh) it->second = GiNaC::realsymbol("\u03b4" + c.text(z));
+        dz = it->second;
+      }
+      total += q.e.diff(GiNaC::ex_to<GiNaC::symbol>(z)) * dz;
+    }
+    if (!total.is_zero()) more.push_back({total, ex(), q.from, q.also});
+  }
+  eqs.insert(eqs.end(), more.begin(), more.end());
+}
+
 // --- names that are functions of t ---------------------------------------------------
 
 ThroughT names_through(const StepContext& c, const ex& t) {

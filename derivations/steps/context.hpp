@@ -139,6 +139,13 @@ struct ThroughT {
 };
 ThroughT names_through(const StepContext& c, const ex& t);
 
+// A claim with differentials (d(y) = 2*x*d(x)) speaks of the changes along a path, and every
+// equation of the references that is not a differential equation holds along it (y = x^2):
+// its total differential is appended to `eqs` (symbolic/differential.hpp). A quantity whose
+// differential the file never writes gets an unknown change of its own, so nothing is assumed
+// constant.
+void add_path_differentials(const StepContext& c, const std::vector<ex>& claim, std::vector<Eq>& eqs);
+
 // A step's claim as checked: the corrected form when the step declares an erratum.
 const Relation& claim_of(const Step& st);
 

@@ -127,3 +127,24 @@ TEST_CASE("differentials: LaTeX writes d(v) as an upright d", "[differential]") 
   CHECK(tex.find("\\mathrm{d}v") != std::string::npos);
   CHECK(tex.find("\\mathrm{d}t") != std::string::npos);
 }
+
+TEST_CASE("differentials: a relation that holds along the path holds for the changes too", "[differential]") {
+  // y = x^2 along the path gives d(y) = 2*x*d(x); a quantity whose change the file never writes
+  // is not assumed constant (g varies unless d(g) = 0 is stated)
+  Checked c = check_text(
+      "symbol x, y, t : real [1]\n"
+      "symbol g : positive [1]\n"
+      "yx: y = x^2\n    by given\n"
+      "dy: d(y) = 2*x*d(x)\n    by rewrite yx\n"
+      "dy_slip: d(y) = x*d(x)\n    by rewrite yx\n"
+      "yg: y = g*t\n    by given\n"
+      "g_may_vary: d(y) = g*d(t)\n    by rewrite yg\n"
+      "constant: d(g) = 0\n    by given\n"
+      "g_constant: d(y) = g*d(t)\n    by rewrite yg, constant\n"
+      "g_constant_slip: d(y) = 2*g*d(t)\n    by rewrite yg, constant\n");
+  CHECK(c.kind("dy") == K::Proved);
+  CHECK(c.kind("dy_slip") == K::Refuted);
+  CHECK(c.kind("g_may_vary") == K::Undecided);
+  CHECK(c.kind("g_constant") == K::Proved);
+  CHECK(c.kind("g_constant_slip") == K::Refuted);
+}
