@@ -145,6 +145,7 @@ TEST_CASE("differentials: a relation that holds along the path holds for the cha
   CHECK(c.kind("dy") == K::Proved);
   CHECK(c.kind("dy_slip") == K::Refuted);
   CHECK(c.kind("g_may_vary") == K::Undecided);
+  CHECK(c.at("g_may_vary").verdict.reason.find("if g is constant, cite a step d(g) = 0") != std::string::npos);
   CHECK(c.kind("g_constant") == K::Proved);
   CHECK(c.kind("g_constant_slip") == K::Refuted);
 }
