@@ -161,7 +161,6 @@ Verdict integrate_differential(StepContext& c, const Relation& claim) {
   // integrate each separated term from its start
   const GiNaC::symbol s(fresh_name(table));   // a real variable the table does not know
   ex integrated = 0;
-  std::string shown;
   for (std::size_t i = 0; i < terms.size(); ++i) {
     const ex f = q[i].subs(terms[i].d.x == s);
     const integrals::Definite r = integrals::definite_integral(f, s, terms[i].start, 0, terms[i].d.x, 0, table);
