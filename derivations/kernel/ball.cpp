@@ -564,13 +564,16 @@ Ball enclose_sign(const ex& constant, long start_bits, long max_bits) {
   return enclose_sign_at(constant, nullptr, start_bits, max_bits);
 }
 
+bool sign_decided(const Ball& b) {
+  return b.status == BallStatus::NotReal || b.status == BallStatus::Pole ||
+         (b.status == BallStatus::Value &&
+          (arb_is_positive(b.impl->v) || arb_is_negative(b.impl->v) || arb_is_zero(b.impl->v)));
+}
+
 Ball enclose_sign_at(const ex& constant, const GiNaC::exmap* point, long start_bits, long max_bits) {
   for (long p = std::max(32L, start_bits);; p *= 4) {
     Ball b = enclose_at(constant, point, std::min(p, max_bits));
-    bool decided = b.status == BallStatus::NotReal || b.status == BallStatus::Pole ||
-                   (b.status == BallStatus::Value &&
-                    (arb_is_positive(b.impl->v) || arb_is_negative(b.impl->v) || arb_is_zero(b.impl->v)));
-    if (decided || p >= max_bits) return b;
+    if (sign_decided(b) || p >= max_bits) return b;
   }
 }
 

@@ -71,6 +71,8 @@ Ball enclose_at(const GiNaC::ex& e, const GiNaC::exmap* point, long prec_bits);
 // exactly zero), or any certified status (NotReal / Pole).
 Ball enclose_sign(const GiNaC::ex& constant, long start_bits = 128, long max_bits = 1 << 16);
 Ball enclose_sign_at(const GiNaC::ex& e, const GiNaC::exmap* point, long start_bits = 128, long max_bits = 1 << 16);
+// What enclose_sign stops at: a certified status (NotReal / Pole) or a Value whose sign is known.
+bool sign_decided(const Ball& b);
 
 // The outcome of comparing two sides at one point.
 struct PointComparison {

@@ -94,15 +94,14 @@ SequenceCheck check_sequence(const ex& f, const ex& x, const ex& point, int at_i
         out.note = "budget: the numeric sequence took more than " + fmt(kMaxSeconds) + " s of CPU time";
         return out;
       }
-      {
-        // one evaluation at the start precision first: a point whose evaluation is both
-        // undecided and slow (Arb reducing exp(2^(2^20)) before it gives up) ends the sequence
-        const double t0 = cpu_seconds();
-        kernel::Ball quick = kernel::enclose_at(D, &q, kStartBits);
-        const double spent = cpu_seconds() - t0;
-        if (quick.status == kernel::BallStatus::Unknown && spent > 0.05) break;
-      }
-      kernel::Ball b = kernel::enclose_sign_at(D, &q, kStartBits, kMaxBits);
+      // one evaluation at the start precision first: a point whose evaluation is both
+      // undecided and slow (Arb reducing exp(2^(2^20)) before it gives up) ends the sequence;
+      // a decided one is the answer enclose_sign_at would give, so it is kept
+      const double t0 = cpu_seconds();
+      kernel::Ball quick = kernel::enclose_at(D, &q, kStartBits);
+      const double spent = cpu_seconds() - t0;
+      if (quick.status == kernel::BallStatus::Unknown && spent > 0.05) break;
+      kernel::Ball b = kernel::sign_decided(quick) ? std::move(quick) : kernel::enclose_sign_at(D, &q, 4 * kStartBits, kMaxBits);
       // not decided at the precision cap: points closer to the limit need more still
       if (b.status == kernel::BallStatus::Unknown) break;
       if (b.status != kernel::BallStatus::Value) continue;
