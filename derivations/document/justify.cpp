@@ -461,7 +461,9 @@ StepResult Search::attempt_rule(RuleSpec rule, const Relation* claim, const Deri
   t.rule = std::move(rule);
   try {
     ++*work_;
-    StepResult r = check_step(on ? *on : d_, t, opt_);
+    ProveOptions o = opt_;
+    o.reorder_references = false;   // see ProveOptions: the search tries too many sets to pay for it
+    StepResult r = check_step(on ? *on : d_, t, o);
     r.step = &s_;
     r.found_line = rule_line_text(t.rule);
     if (claim) r.found_claim = t.claim_text;

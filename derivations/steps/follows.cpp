@@ -240,11 +240,12 @@ static std::string pinned_product(StepContext& c, const Reduction& red, const ex
 // follows() on the equations as given (instantiated: false) or with their instances at the
 // claim's points and their derivatives (true).
 static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0,
-                            const std::vector<ex>& preferred, bool instantiated, bool* pinned) {
+                            const std::vector<ex>& preferred, bool instantiated, bool* pinned, bool* gap = nullptr) {
   std::vector<Eq> eqs = instantiated ? instantiate(c, eqs0, a - b) : eqs0;
   Bans bans;
   Reduction red;
   Verdict v;
+  bool* gap_stop = gap;
   for (int attempt = 0;; ++attempt) {
     red = reduce(c, eqs, a - b, preferred, false, bans);
     reject_contradictions(c, red, eqs);
@@ -286,6 +287,7 @@ static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std:
     Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
     u.residual = c.text(ra - rb);
     v = u;
+    if (gap_stop) *gap_stop = true;
     break;
   }
   if (red.degenerate && v.holds())
@@ -310,8 +312,21 @@ static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std:
 
 Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0, const std::vector<ex>& preferred) {
   if (eqs0.empty()) return prove_equal(a, b, c.d.symbols, c.opt);
-  bool pinned = false;
-  Verdict v = follows_from(c, a, b, eqs0, preferred, true, &pinned);
+  bool pinned = false, gap = false;
+  Verdict v = follows_from(c, a, b, eqs0, preferred, true, &pinned, &gap);
+  // the elimination takes the references in their order, and which quantities it eliminates
+  // decides whether the point it leaves satisfies them all (`gamma = 1/sqrt(1 - v^2/c^2)`
+  // before `beta = v/c` leaves `gamma*sqrt(1 - beta^2) = 1` unfixed): a point that does not is
+  // no counterexample, so the references are taken once more, the first last (one more try:
+  // each costs a whole elimination). Either verdict carries its own evidence (a refutation
+  // only at a point that satisfies them all).
+  if (gap && !pinned && eqs0.size() > 1 && c.opt.reorder_references) {
+    std::vector<Eq> rotated(eqs0.begin() + 1, eqs0.end());
+    rotated.push_back(eqs0.front());
+    bool again = false, gap2 = false;
+    Verdict w = follows_from(c, a, b, rotated, preferred, true, &again, &gap2);
+    if (!again && (w.holds() || w.kind == VerdictKind::Refuted)) return w;
+  }
   // the instances may be what pins (m_r = m_r(t) and its derivative in t give m_r' = 0): the
   // equations as written may prove the claim without them
   if (pinned) {

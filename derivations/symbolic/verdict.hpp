@@ -84,6 +84,9 @@ struct ProveOptions {
   double rel_tol_exponent = -30;  // agree when |a-b| <= 10^exp * max(|a|,|b|,1e-300)
   std::uint64_t seed = 20261121;  // fixed: verdicts are deterministic
   std::size_t max_terms = 1000000;  // resource limit for expand/normal (estimated first)
+  // when an elimination leaves a point that fails a reference, eliminate once more with the
+  // references in another order (steps/follows.cpp); a search that tries many sets turns it off
+  bool reorder_references = true;
 };
 
 // Guards GiNaC::Digits (a process-wide global) for the lifetime of the guard.
