@@ -630,7 +630,13 @@ void DocumentReader::build_steps() {
           dr.nearby.push_back(it->label);
       // the text on both sides: "… where the higher-order term was neglected" follows the display
       // (the sentences that lead into the display, and the one that continues it)
-      dr.hint = hint_of(disp.prose_before);
+      // (a display that follows another with no prose between continues the same sentence:
+      // "Differentiating (2.3), …" leads into both)
+      {
+        std::size_t k = r.display;
+        while (k > 0 && doc_.displays[k].prose_before.find_first_not_of(" \t\n") == std::string::npos) --k;
+        dr.hint = hint_of(doc_.displays[k].prose_before);
+      }
       {
         const std::size_t after_end = r.display + 1 < doc_.displays.size()
                                           ? offset_of(doc_.displays[r.display + 1].pos)

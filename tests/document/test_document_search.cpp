@@ -247,6 +247,15 @@ TEST_CASE("document search: differentiating a row that sets a quantity, and a sl
   CHECK(at(check(head + "$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "refuted");
   // without the words the row is a new law about v(t) (a given)
   CHECK(at(check("$$v = u \\sin a - g t$$\n\nThen\n\n$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "premise");
+  // a display that follows the differentiated one with no prose between continues its sentence
+  const std::string two = "Differentiating once more,\n"
+                          "\n"
+                          "$$v = u \\sin a - g t$$\n"   // 3
+                          "\n";
+  CHECK(at(check(two + "$$\\frac{dv}{dt} = -g$$\n"), 5).verdict == "proved");
+  CHECK(at(check(two + "$$\\frac{dv}{dt} = g$$\n"), 5).verdict == "refuted");
+  // (prose between them starts a new sentence: a new law again)
+  CHECK(at(check(two + "Then\n\n$$\\frac{dv}{dt} = g$$\n"), 7).verdict == "premise");
 }
 
 // `v(0)` is the value of v at 0, not the product v*0 (which once made `$v(0) = v_0$` pin
