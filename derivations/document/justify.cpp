@@ -589,6 +589,9 @@ const Search::Own& Search::own_search(const Step& st) const {
     o.withheld = r.verdict.kind == VerdictKind::Undecided && r.verdict.method == "refutation withheld";
     o.established = r.premise || r.verdict.holds();
     o.cut = late();
+    const std::string& why = r.verdict.reason;
+    o.holds_if_positive = r.verdict.kind == VerdictKind::Undecided && why.find(kHoldsIfDeclared) != std::string::npos &&
+                          why.find("positive") != std::string::npos;
     it = own_.emplace(st.label, o).first;
   }
   return it->second;
@@ -620,7 +623,8 @@ bool Search::rests_on_a_slip(const std::vector<std::string>& refs, std::vector<s
     if (own.cut) return true;
     // a row that a counterexample to the rows before it leaves standing only by a doubt may
     // be a slip as well (`\omega_0 Q_0 = Q_0\sqrt{LC}` beside `\omega_0 = 1/\sqrt{LC}` pins LC = 1)
-    if (own.refuted || own.withheld) {
+    // (not one that holds once its names are positive: undecided for want of a sign, no slip)
+    if (own.refuted || (own.withheld && !own.holds_if_positive)) {
       any = true;
       if (slips) slips->push_back(label);
     }

@@ -75,10 +75,13 @@ std::string Search::untrusted_row(const std::vector<std::string>& refs) {
     const Step* st = d_.find(label);
     if (!st || !st->document_row || st->document_row->relation == "inline") continue;
     const Own& own = own_search(*st);
+    // (a row that holds once its names are positive counts as derived: the counterexample
+    // against this row is one of that reading, checked before this doubt is asked)
     const std::string why = own.refuted       ? "is itself refuted by its own search"
                             : own.cut         ? "could not be checked itself within the search's tries"
-                            : own.established ? ""
-                                              : "is not derived itself (its own search leaves it undecided)";
+                            : own.established || own.holds_if_positive
+                                ? ""
+                                : "is not derived itself (its own search leaves it undecided)";
     if (!why.empty())
       return label + " " + why + ", and the counterexample rests on it: this row may continue from the right result";
   }
@@ -130,7 +133,12 @@ std::string Search::unset_name(const std::vector<std::string>& refs) const {
   }
   for (const auto& st : d_.steps) {
     if (&st == &s_) break;
-    if (!st.document_row || !st.document_row->not_read.empty()) continue;
+    if (!st.document_row) continue;
+    // (a row the reader could not read may set it: `W_{12} = \int_{V_1}^{V_2} p\,dV` with p
+    // varying; the counterexample gives the name a value that row may forbid)
+    if (const std::string& u = st.document_row->unread_sets; !u.empty() && mine.count(base(u)) && !set_by_refs.count(base(u)))
+      return "'" + base(u) + "' is set by " + st.label + ", which is not read, so the counterexample may contradict it";
+    if (!st.document_row->not_read.empty()) continue;
     if (st.document_row->relation != "=" && st.document_row->relation != "inline") continue;
     if (!in_force(st)) continue;   // a row of a special case not in force here does not count
     const std::string n = base(set_name(st));
@@ -369,7 +377,7 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
     for (const auto& b : theirs)
       if (a != b && base(a) == base(b))
         return "'" + base(a) + "' varies with a variable in one of these rows and is a plain quantity in the other";
-  if (!r.verdict.hint.empty()) return "the row holds under a declaration the document does not make (" + r.verdict.hint + ")";
+  if (!r.verdict.hint.empty()) return std::string(kHoldsIfDeclared) + " (" + r.verdict.hint + ")";
   // (a derivative or integral of an explicit expression in constants, d/dt ln(m_0/(m_0 - k t)),
   // that is false read alone is a slip whatever the rows say: no name in it can vary)
   static const std::set<std::string> calculus = {"diff", "integral", "limit"};

@@ -632,11 +632,9 @@ void DocumentReader::build_steps() {
       // (the sentences that lead into the display, and the one that continues it)
       // (a display that follows another with no prose between continues the same sentence:
       // "Differentiating (2.3), …" leads into both)
-      {
-        std::size_t k = r.display;
-        while (k > 0 && doc_.displays[k].prose_before.find_first_not_of(" \t\n") == std::string::npos) --k;
-        dr.hint = hint_of(doc_.displays[k].prose_before);
-      }
+      std::size_t lead = r.display;
+      while (lead > 0 && doc_.displays[lead].prose_before.find_first_not_of(" \t\n") == std::string::npos) --lead;
+      dr.hint = hint_of(doc_.displays[lead].prose_before);
       {
         const std::size_t after_end = r.display + 1 < doc_.displays.size()
                                           ? offset_of(doc_.displays[r.display + 1].pos)
@@ -687,6 +685,8 @@ Step DocumentReader::unread_step(const std::string& label, const ReadRow& r, con
   s.rule.name = s.rule.written_name = "given";
   DocumentRow dr;
   dr.not_read = why;
+  if (!r.tex.chains.empty() && !r.tex.chains[0].sides.empty() && r.tex.chains[0].sides[0].kind == NodeKind::Symbol)
+    dr.unread_sets = r.tex.chains[0].sides[0].text;
   s.document_row = dr;
   return s;
 }

@@ -195,11 +195,16 @@ class Search {
   const ProveOptions& opt_;
   // What a row's own (nested) search found, once per row: refuted, a given or derived, or cut
   // short by the count of tries (then neither a proof nor a refutation may rest on it).
+  // The doubt of a row whose counterexample a declaration of sign would rule out.
+  static constexpr const char* kHoldsIfDeclared = "the row holds under a declaration the document does not make";
   struct Own {
     bool refuted = false;
     bool withheld = false;   // a counterexample satisfies the rows before it, refutation withheld
     bool established = false;
     bool cut = false;
+    // undecided only for want of a sign: it holds where the names the document declares nothing
+    // about are positive (the reading a refutation of a later row is confirmed in)
+    bool holds_if_positive = false;
   };
   mutable std::map<std::string, Own> own_;
   const Own& own_search(const Step& st) const;

@@ -72,6 +72,7 @@ struct DocumentRow {
   std::vector<std::string> cited;   // labels the author cites (\eqref, "(9.6)") before or in the row
   std::string hint;                 // words of the prose before the display ("substitut", "integrat")
   std::string not_read;             // non-empty: why the row is not checked (notation not read yet)
+  std::string unread_sets;          // such a row's left side, when it parsed as a name (`W = \int …`)
   std::vector<std::string> vectors; // names written bold or with an arrow
   bool authors_rule = false;        // the author wrote the rule (`% by …`): checked as a .dc step
 };

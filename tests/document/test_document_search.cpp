@@ -326,3 +326,43 @@ TEST_CASE("document search: a derivative of constants that is false alone is a s
                       "$$\\frac{d}{dt} \\ln\\frac{M_0}{M_0 - q t} = \\frac{q}{M_0}$$\n");
   CHECK(at(regime, 3).verdict != "refuted");
 }
+
+// A row left undecided only for want of a sign (`v = \sqrt{2 g h}` holds once v is positive) is
+// no slip: a later slip that rests on it is refuted (in the reading where the names are
+// positive), where it was withheld as "resting on a row that is not derived".
+TEST_CASE("document search: a row that holds once its names are positive carries a later refutation") {
+  const std::string head = "$$\\frac{1}{2} m v^2 = m g h$$\n"   // 1
+                           "\n"
+                           "Solving for the speed,\n"
+                           "\n"
+                           "$$v = \\sqrt{2 g h}$$\n"             // 5
+                           "\n"
+                           "The momentum at the bottom is therefore\n"
+                           "\n";
+  const auto rows = check(head + "$$m v = m \\sqrt{g h}$$\n");   // 9
+  CHECK(at(rows, 5).verdict == "undecided");
+  CHECK(at(rows, 5).reason.find("holds if v is positive") != std::string::npos);
+  CHECK(at(rows, 9).verdict == "refuted");
+  // the right momentum is never refuted
+  CHECK(at(check(head + "$$m v = m \\sqrt{2 g h}$$\n"), 9).verdict != "refuted");
+}
+
+// A name set by a row the reader could not read (an integral of a quantity that varies) is not
+// free: a counterexample that gives it any value may contradict that row. Here Q stands for the
+// work of an isotherm written as an integral; a true row about Q is never refuted.
+TEST_CASE("document search: a name set by an unread row keeps a counterexample from refuting") {
+  const std::string text = "$$p = \\frac{n R T}{V}, \\quad \\frac{V_2}{V_1} = r$$\n"   // 1
+                           "\n"
+                           "$$W = \\int_{V_1}^{V_2} p\\, dV$$\n"                          // 3
+                           "\n"
+                           "$$Q = W$$\n"                                                  // 5
+                           "\n"
+                           "so\n"
+                           "\n"
+                           "$$\\frac{Q}{T} = n R \\ln r$$\n";                            // 9
+  const auto rows = check(text);
+  CHECK(at(rows, 3).verdict == "undecided");   // not read yet
+  // (it was refuted: Q = W with W free)
+  CHECK(at(rows, 9).verdict == "undecided");
+  CHECK(at(rows, 9).reason.find("'W' is set by L3, which is not read") != std::string::npos);
+}

@@ -318,6 +318,12 @@ TEST_CASE("tex: tags, labels and references", "[tex]") {
   CHECK(q.tag == "9.6");
   CHECK(show(q) == "p = m*v");
   CHECK(parse_tex_row("p = m v \\qquad (12)", kOrigin, {}).tag == "12");
+  // the sentence's full stop or comma before the tag
+  for (const char* row : {"p = m v . \\qquad (3)", "p = m v, \\quad (3)", "p = m v \\, . \\qquad (3)"}) {
+    TexRow t = parse_tex_row(row, kOrigin, {});
+    CHECK(t.tag == "3");
+    CHECK(show(t) == "p = m*v");
+  }
   CHECK(parse_tex_row("p = m v \\label{eq:p} \\qquad \\text{(9.2)}", kOrigin, {}).tag == "9.2");
   CHECK(parse_tex_row("p = m v (3)", kOrigin, {}).tag.empty());  // a product, not a tag
   CHECK(text("p = m v (3)") == "p = m*v*(3)");
