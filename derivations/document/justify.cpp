@@ -182,7 +182,7 @@ StepResult Search::run() {
     return finish(res, v);
   }
   // 3. follows from earlier rows
-  std::vector<std::pair<StepResult, std::vector<std::string>>> refutations;
+  Refutations refutations;
   int positive_tries = 0;
   for (const auto& refs : candidate_sets()) {
     if (late()) break;
@@ -211,7 +211,7 @@ StepResult Search::run() {
                   " among them is refuted, or left standing only by a doubt (a counterexample satisfies the rows "
                   "before it); a slip beside the row it garbles pins a quantity, and from that anything follows";
     }
-    if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs});
+    if (r.verdict.kind == VerdictKind::Refuted && rows_speak_of_claim(refs)) refutations.push_back({r, refs, false});
     // undecided where the names take any real value (V^gamma at a negative volume): the
     // reading with every undeclared name positive may still find a counterexample, which is
     // one of the unrestricted reading too
@@ -219,7 +219,7 @@ StepResult Search::run() {
         positive_tries++ < 3) {
       StepResult pos = attempt_positive(refs);
       if (usable(pos) && pos.verdict.kind == VerdictKind::Refuted && !side_condition_only(pos.verdict))
-        refutations.push_back({pos, refs});
+        refutations.push_back({pos, refs, false});
     }
   }
   // (a nested search only asks whether the row is refuted: the rules below only prove)
@@ -227,7 +227,7 @@ StepResult Search::run() {
     // 4. a limit the row takes, or the regime an approximate row holds in (`$\mu \approx 0$`)
     if (auto r = by_limit()) return *r;
     // 5. solved for its subject from earlier rows (theta = arccos(...) from cos(theta) = ...)
-    if (auto r = by_solve()) return *r;
+    if (auto r = by_solve(refutations)) return *r;
     // 6. agreement to first order in the small quantities the text neglects
     if (auto r = by_first_order()) return *r;
     // 7. the rates of a balance of increments ("taking the time derivative")
@@ -242,7 +242,7 @@ StepResult Search::run() {
   std::string first_doubt;
   std::vector<std::string> doubt_refs;
   bool doubt_names_declaration = false;
-  for (auto [r, refs] : refutations) {
+  for (auto [r, refs, solved] : refutations) {
     // a name of the claim or the rows that an earlier row in force sets: the counterexample must
     // satisfy that row too, so the set is widened by it (a few rounds) and tried again
     for (int round = 0; round < 3 && !late(); ++round) {
@@ -288,8 +288,10 @@ StepResult Search::run() {
       // the document declares no signs: a counterexample at a negative mass or length is no
       // evidence unless one with every quantity positive is found too (and that one is
       // a counterexample of the unrestricted reading as well)
-      StepResult pos = attempt_positive(refs);
-      if (!usable(pos) || pos.verdict.kind != VerdictKind::Refuted || side_condition_only(pos.verdict))
+      const RuleSpec solve = solved ? solve_for_subject(refs) : RuleSpec{};
+      StepResult pos = attempt_positive(refs, nullptr, solved ? &solve : nullptr);
+      if (!usable(pos) || pos.verdict.kind != VerdictKind::Refuted || side_condition_only(pos.verdict) ||
+          (solved && !substituted_back_refutes(pos)))
         doubt = "every counterexample found needs a negative value of a quantity the document declares no sign "
                 "for" + std::string(pos.verdict.holds() ? " (the row holds when they are positive: declare "
                                                             "them positive, e.g. `symbol m : positive`)" : "");
@@ -319,7 +321,7 @@ StepResult Search::run() {
     }
   }
   if (!refutations.empty()) {
-    const auto& first = refutations.front().first;
+    const auto& first = refutations.front().r;
     const auto& refs = doubt_refs;
     Verdict v = undecided("refutation withheld",
                                   "a counterexample satisfies " + join(refs) + ", but " + first_doubt);
@@ -425,7 +427,7 @@ StepResult Search::attempt(const std::vector<std::string>& refs) {
 // The step checked with one rule of the .dc language (its rows and arguments filled in).
 // The rewrite from `refs` in the reading where every name of the document without a declared
 // domain is positive (masses, lengths, speeds of the usual physical reading).
-StepResult Search::attempt_positive(const std::vector<std::string>& refs, const Relation* claim) {
+StepResult Search::attempt_positive(const std::vector<std::string>& refs, const Relation* claim, const RuleSpec* as) {
   if (!positive_) {
     // (not a name that an equation of the text in force here, or for the rows of the two
     // displays before, sets to zero or below: `neglect D`, `$\theta = 0$`)
@@ -444,6 +446,7 @@ StepResult Search::attempt_positive(const std::vector<std::string>& refs, const 
       }
     positive_ = std::make_unique<Derivation>(positive_reading(d_, zero));
   }
+  if (as) return attempt_rule(*as, claim, positive_.get());
   RuleSpec rule;
   rule.name = rule.written_name = "rewrite";
   for (const auto& label : refs) rule.refs.push_back(label_arg(label));

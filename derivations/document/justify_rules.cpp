@@ -88,15 +88,12 @@ std::optional<StepResult> Search::by_limit() {
 
 // `theta = \arccos(…)` from rows that give cos(theta): solved for the subject, the names of
 // the rows that the claim does not mention eliminated.
-std::optional<StepResult> Search::by_solve() {
+std::optional<StepResult> Search::by_solve(Refutations& refutations) {
   if (row_.relation != "=") return std::nullopt;
   const Node& subject = s_.claim.sides.front();
   if (subject.kind != NodeKind::Symbol) return std::nullopt;
-  std::set<std::string> mine, given;
-  for (const auto& side : s_.claim.sides) names_of(side, mine);
-  for (const auto& label : row_.locals)
-    if (const Step* st = d_.find(label)) given.insert(set_name(*st));
   int tries = 0;
+  bool refuted_once = false;
   for (const auto& refs : candidate_sets()) {
     std::vector<std::string> rows;
     std::set<std::string> theirs;
@@ -108,15 +105,48 @@ std::optional<StepResult> Search::by_solve() {
     }
     if (rows.empty() || !theirs.count(subject.text)) continue;
     if (++tries > 6) break;
-    std::set<std::string> skip = mine;
-    skip.insert(given.begin(), given.end());
-    StepResult r = attempt_rule(solve_spec(refs, subject, theirs, skip));
+    StepResult r = attempt_rule(solve_for_subject(refs));
     if (usable(r) && r.verdict.holds() && !rests_on_a_slip(refs)) {
       std::string what = "solve for " + subject.text;
       return found(r, what, refs);
     }
+    // (`t_{1/2} = \tau/\ln 2` against `e^{-t_{1/2}/\tau} = 1/2`: no elimination undoes the
+    // exponential, the claim substituted back does)
+    if (usable(r) && substituted_back_refutes(r) && !refuted_once && rows_speak_of_claim(refs)) {
+      refuted_once = true;
+      // widened here by the rows that set its names, and solved again (the widening of the
+      // refutations after the search eliminates, which does not undo the exponential either)
+      std::vector<std::string> wider = refs;
+      for (const auto& l : unset_setters(refs)) wider.push_back(l);
+      if (wider.size() > refs.size() && wider.size() <= kMaxWidened && !late()) {
+        StepResult w = attempt_rule(solve_for_subject(wider));
+        if (usable(w) && substituted_back_refutes(w)) {
+          refutations.push_back({w, wider, true});
+          continue;
+        }
+      }
+      refutations.push_back({r, refs, true});
+    }
   }
   return std::nullopt;
+}
+
+// A refutation by `solve` that the rows themselves give: the claim substituted back fails
+// them. (Not one from the sign of the root, `the claimed root must be positive like t`: that
+// is the reading with every name positive speaking, t = (m_0 - m_r)/\mu at m_r > m_0.)
+bool Search::substituted_back_refutes(const StepResult& r) {
+  return r.verdict.kind == VerdictKind::Refuted && r.verdict.method.rfind("claim substituted back", 0) == 0;
+}
+
+RuleSpec Search::solve_for_subject(const std::vector<std::string>& refs) const {
+  std::set<std::string> skip, names;
+  for (const auto& side : s_.claim.sides) names_of(side, skip);
+  for (const auto& label : row_.locals)
+    if (const Step* st = d_.find(label)) skip.insert(set_name(*st));
+  for (const auto& label : refs)
+    if (const Step* st = d_.find(label); st && st->document_row && st->document_row->relation != "inline")
+      for (const auto& side : st->claim.sides) names_of(side, names);
+  return solve_spec(refs, s_.claim.sides.front(), names, skip);
 }
 
 // `by solve REFS for x, y…`: the subject, then each declared plain name of `names` not in `skip`

@@ -61,7 +61,8 @@ class Search {
   // The step checked with one rule of the .dc language (its rows and arguments filled in).
   // The rewrite from `refs` in the reading where every name of the document without a declared
   // domain is positive (masses, lengths, speeds of the usual physical reading).
-  StepResult attempt_positive(const std::vector<std::string>& refs, const Relation* claim = nullptr);
+  StepResult attempt_positive(const std::vector<std::string>& refs, const Relation* claim = nullptr,
+                              const RuleSpec* rule = nullptr);   // (a rule other than rewrite)
 
   StepResult attempt_rule(RuleSpec rule, const Relation* claim = nullptr, const Derivation* on = nullptr);
 
@@ -79,7 +80,18 @@ class Search {
 
   // `theta = \arccos(…)` from rows that give cos(theta): solved for the subject, the names of
   // the rows that the claim does not mention eliminated.
-  std::optional<StepResult> by_solve();
+  // (a refutation it meets, the claim substituted back into the rows, is added to `refutations`
+  // for the doubts to weigh like any other)
+  struct Refutation {
+    StepResult r;
+    std::vector<std::string> refs;
+    bool solved = false;   // found by solving for the subject (its positive reading solves too)
+  };
+  using Refutations = std::vector<Refutation>;
+  std::optional<StepResult> by_solve(Refutations& refutations);
+  // `solve REFS for` the row's subject and the names of REFS it does not mention
+  RuleSpec solve_for_subject(const std::vector<std::string>& refs) const;
+  static bool substituted_back_refutes(const StepResult& r);
   RuleSpec solve_spec(const std::vector<std::string>& refs, const Node& subject, const std::set<std::string>& names,
                       const std::set<std::string>& skip) const;
 

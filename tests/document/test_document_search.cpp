@@ -366,3 +366,23 @@ TEST_CASE("document search: a name set by an unread row keeps a counterexample f
   CHECK(at(rows, 9).verdict == "undecided");
   CHECK(at(rows, 9).reason.find("'W' is set by L3, which is not read") != std::string::npos);
 }
+
+// No elimination undoes an exponential: a slip in a quantity solved out of one is refuted by
+// substituting the claim back into the row (`solve`), with the doubts of any refutation; a
+// claimed root of the wrong sign is no evidence (the signs are the reading's, not the author's).
+TEST_CASE("document search: a slip in a quantity solved out of an exponential") {
+  const std::string head = "$$\\tau = R C$$\n"                       // 1
+                           "\n"
+                           "The current has halved at $t_h$, where\n"
+                           "\n"
+                           "$$e^{-t_h/\\tau} = \\tfrac12$$\n"          // 5
+                           "\n"
+                           "so\n"
+                           "\n";
+  CHECK(at(check(head + "$$t_h = \\tau / \\ln 2$$\n"), 9).verdict == "refuted");
+  // (the right one is not refuted; it is not proved either: `solve` does not exclude other roots
+  // of e^{-t_h/\\tau} = 1/2 yet)
+  CHECK(at(check(head + "$$t_h = \\tau \\ln 2$$\n"), 9).verdict != "refuted");
+  // the sign of a root: t_h = -\tau\ln 2 fails only because t_h is read positive
+  CHECK(at(check(head + "$$t_h = (m_0 - m)/\\mu$$\n"), 9).verdict != "refuted");
+}
