@@ -275,7 +275,9 @@ StepResult Search::run() {
       for (const auto& l : refs)
         if (std::find(own.begin(), own.end(), l) == own.end()) rest.push_back(l);
       StepResult w = attempt(rest);
-      if (usable(w) && w.verdict.kind == VerdictKind::Refuted) {
+      // (not when that leaves a name of the row unset that the dropped given sets: `R` of the
+      // display's `R = m v/(qB)` would then be free; see chain_computes)
+      if (usable(w) && w.verdict.kind == VerdictKind::Refuted && (unset_name(rest).empty() || !unset_name(refs).empty())) {
         r = w;
         refs = rest;
       }

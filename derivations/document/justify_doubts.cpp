@@ -289,6 +289,27 @@ std::vector<std::string> Search::own_display_givens(const std::vector<std::strin
   return out;
 }
 
+// A later link of a chain that ends in an expression computes the quantity its first side
+// names: `K = \tfrac12 m v^2 = q^2 B^2 R^2/(2m)` with the display's `R = m v/(qB)` is no new law.
+// A chain that ends in a constant, `… = m_p v_p - m_c v_c = 0`, may state one; so may a link
+// whose left side is a name a given of the display introduces (`i = \dot q = -\omega_0 Q_0
+// \sin\omega_0 t`, \dot q read as a new name).
+bool Search::chain_computes(const std::vector<std::string>& refs) const {
+  if (row_.link < 2) return false;
+  const Node& first = s_.claim.sides.front();
+  const Node& last = s_.claim.sides.back();
+  if (last.kind == NodeKind::Number ||
+      (last.kind == NodeKind::Neg && !last.args.empty() && last.args[0].kind == NodeKind::Number))
+    return false;
+  if (first.kind != NodeKind::Symbol) return true;
+  for (const auto& label : own_display_givens(refs))
+    if (const Step* st = d_.find(label)) {
+      const auto fresh = new_names_of(*st);
+      if (std::find(fresh.begin(), fresh.end(), first.text) != fresh.end()) return false;
+    }
+  return true;
+}
+
 bool Search::calculus_of_constants() const {
   // the names that are a function of a variable somewhere in the document: v for v__of_t
   std::set<std::string> varying;
@@ -332,7 +353,7 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
   // names its quantities and then states a law (`\Delta p = p_p + p_c = m_p v_p - m_c v_c = 0`):
   // against rows before it in the same display that introduced names (givens), the row may be
   // one more equation of the system rather than a consequence of it
-  if (const auto own = own_display_givens(refs); !own.empty())
+  if (const auto own = own_display_givens(refs); !own.empty() && !chain_computes(refs))
     return "the counterexample rests on " + own.front() + ", a given of this same display, so the row may be one "
            "more law of the system it lists";
   // `… = m_p v_p - m_c v_c = 0` after links that only name the sum: the counterexample chose

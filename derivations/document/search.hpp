@@ -199,6 +199,7 @@ class Search {
   // Why a counterexample is no evidence against the author here ("" when it is).
   std::string reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const;
   std::vector<std::string> own_display_givens(const std::vector<std::string>& refs) const;
+  bool chain_computes(const std::vector<std::string>& refs) const;
   std::vector<std::pair<std::string, std::string>> equations_for_applied(const std::vector<std::string>& refs) const;
 
   const Derivation& d_;

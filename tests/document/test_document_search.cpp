@@ -386,3 +386,26 @@ TEST_CASE("document search: a slip in a quantity solved out of an exponential") 
   // the sign of a root: t_h = -\tau\ln 2 fails only because t_h is read positive
   CHECK(at(check(head + "$$t_h = (m_0 - m)/\\mu$$\n"), 9).verdict != "refuted");
 }
+
+// A later link of a chain that computes the quantity its first link names is no new law of the
+// display: its slip is refuted with the display's other givens. A link whose left side is a
+// name the display introduces may still be one (here \dot q, read as a new name).
+TEST_CASE("document search: a chain that computes a quantity, beside the display's givens") {
+  const std::string cyclotron = "The ion leaves on the outermost orbit, so\n"
+                                "\n"
+                                "\\begin{gather}\n"
+                                "  R = \\frac{m v}{q B} , \\\\\n"                                // 4
+                                "  K = \\tfrac12 m v^2 = \\frac{q^2 B R^2}{2 m} .\n"              // 5
+                                "\\end{gather}\n";
+  const auto rows = check(cyclotron);
+  CHECK(at(rows, 5, 1).verdict == "premise");
+  CHECK(at(rows, 5, 2).verdict == "refuted");
+  CHECK(at(check(cyclotron.substr(0, cyclotron.find("q^2 B R^2")) + "q^2 B^2 R^2}{2 m} .\n\\end{gather}\n"), 5, 2)
+            .verdict != "refuted");
+  const auto current = check("$$\\omega_0 = \\frac{1}{\\sqrt{LC}}$$\n"                       // 1
+                             "\n"
+                             "$$q = Q_0\\cos\\omega_0 t$$\n"                                   // 3
+                             "\n"
+                             "$$i = \\dot{q} = -\\omega_0 Q_0 \\sin\\omega_0 t$$\n");         // 5
+  CHECK(at(current, 5, 2).verdict != "refuted");
+}
