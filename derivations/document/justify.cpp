@@ -269,15 +269,26 @@ StepResult Search::run() {
     // a counterexample to the rest is no "one more law of the system". (Not so for a
     // differential equation for a function the row applies: without it the function's value is
     // free, and any value "refutes".)
+    // (a chain that computes keeps the givens that introduce a name it uses, `\tfrac12 m v^2 =
+    // G M m/R` beside `v = \sqrt{2 G M/R}`: see chain_computes)
     const std::vector<std::string> own = own_display_givens(refs);
     if (!own.empty() && !late()) {
+      const bool computes = chain_computes(refs);
+      std::set<std::string> mine;
+      for (const auto& side : s_.claim.sides) names_of(side, mine);
       std::vector<std::string> rest;
-      for (const auto& l : refs)
-        if (std::find(own.begin(), own.end(), l) == own.end()) rest.push_back(l);
-      StepResult w = attempt(rest);
+      for (const auto& l : refs) {
+        bool keep = std::find(own.begin(), own.end(), l) == own.end();
+        if (!keep && computes)
+          if (const Step* st = d_.find(l))
+            for (const auto& n : new_names_of(*st)) keep = keep || mine.count(n) > 0;
+        if (keep) rest.push_back(l);
+      }
+      StepResult w = rest.size() < refs.size() ? attempt(rest) : StepResult{};
       // (not when that leaves a name of the row unset that the dropped given sets: `R` of the
-      // display's `R = m v/(qB)` would then be free; see chain_computes)
-      if (usable(w) && w.verdict.kind == VerdictKind::Refuted && (unset_name(rest).empty() || !unset_name(refs).empty())) {
+      // display's `R = m v/(qB)` would then be free)
+      if (rest.size() < refs.size() && usable(w) && w.verdict.kind == VerdictKind::Refuted &&
+          (unset_name(rest).empty() || !unset_name(refs).empty())) {
         r = w;
         refs = rest;
       }

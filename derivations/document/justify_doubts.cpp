@@ -292,7 +292,7 @@ std::vector<std::string> Search::own_display_givens(const std::vector<std::strin
 // A later link of a chain that ends in an expression computes the quantity its first side
 // names: `K = \tfrac12 m v^2 = q^2 B^2 R^2/(2m)` with the display's `R = m v/(qB)` is no new law.
 // A chain that ends in a constant, `… = m_p v_p - m_c v_c = 0`, may state one; so may a link
-// whose left side is a name a given of the display introduces (`i = \dot q = -\omega_0 Q_0
+// whose left side is a name a given of the display leaves free (`i = \dot q = -\omega_0 Q_0
 // \sin\omega_0 t`, \dot q read as a new name).
 bool Search::chain_computes(const std::vector<std::string>& refs) const {
   if (row_.link < 2) return false;
@@ -302,10 +302,12 @@ bool Search::chain_computes(const std::vector<std::string>& refs) const {
       (last.kind == NodeKind::Neg && !last.args.empty() && last.args[0].kind == NodeKind::Number))
     return false;
   if (first.kind != NodeKind::Symbol) return true;
+  // (a given that introduces it alone determines it, `\tfrac12 m v^2 = G M m/R` then
+  // `v = \sqrt{2 G M/R}`; one that introduces it beside another name, `i = \dot q`, does not)
   for (const auto& label : own_display_givens(refs))
     if (const Step* st = d_.find(label)) {
       const auto fresh = new_names_of(*st);
-      if (std::find(fresh.begin(), fresh.end(), first.text) != fresh.end()) return false;
+      if (fresh.size() > 1 && std::find(fresh.begin(), fresh.end(), first.text) != fresh.end()) return false;
     }
   return true;
 }

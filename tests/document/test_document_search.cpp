@@ -409,3 +409,19 @@ TEST_CASE("document search: a chain that computes a quantity, beside the display
                              "$$i = \\dot{q} = -\\omega_0 Q_0 \\sin\\omega_0 t$$\n");         // 5
   CHECK(at(current, 5, 2).verdict != "refuted");
 }
+
+// A link that solves for the name its row's given introduces is computed, not a new law:
+// `\tfrac12 m v^2 = G M m/R, \qquad v = \sqrt{G M/R}` (the 2 dropped) is refuted against the
+// first link, which the refutation keeps.
+TEST_CASE("document search: a link solved for the name the row's first link introduces") {
+  const std::string head = "<!-- derivcheck: symbol G, M, m, R : positive -->\n"   // 1
+                           "\n"
+                           "$$ F = \\frac{G M m}{R^2} $$\n"                           // 3
+                           "\n"
+                           "The escape speed:\n"
+                           "\n";
+  CHECK(at(check(head + "$$ \\tfrac12 m v^2 = \\frac{G M m}{R} , \\qquad v = \\sqrt{\\frac{G M}{R}} $$\n"), 7, 2)
+            .verdict == "refuted");
+  CHECK(at(check(head + "$$ \\tfrac12 m v^2 = \\frac{G M m}{R} , \\qquad v = \\sqrt{\\frac{2 G M}{R}} $$\n"), 7, 2)
+            .verdict != "refuted");
+}
