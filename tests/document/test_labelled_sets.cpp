@@ -92,9 +92,9 @@ TEST_CASE("labelled documents: no false accept, no false refute, and the derived
     const char* folder;
     int true_read, slips_refuted;
   };
-  for (const Set& set : {Set{"tests/data/documents", 146, 14}, Set{"tests/data/documents/heldout", 71, 5},
-                         Set{"tests/data/documents/heldout3", 68, 9}, Set{"tests/data/documents/heldout4", 72, 4},
-                         Set{"tests/data/documents/heldout5", 83, 0}}) {
+  for (const Set& set : {Set{"tests/data/documents", 146, 16}, Set{"tests/data/documents/heldout", 71, 5},
+                         Set{"tests/data/documents/heldout3", 68, 10}, Set{"tests/data/documents/heldout4", 73, 4},
+                         Set{"tests/data/documents/heldout5", 83, 4}}) {
     INFO(set.folder);
     const Tally t = check_folder(set.folder);
     CHECK(t.true_read >= set.true_read);
