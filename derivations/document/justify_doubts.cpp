@@ -4,6 +4,8 @@
 // a slip themselves.
 #include <algorithm>
 
+#include <ginac/ginac.h>
+
 #include "derivations/document/search.hpp"
 
 namespace dc::document_detail {
@@ -312,6 +314,60 @@ bool Search::chain_computes(const std::vector<std::string>& refs) const {
   return true;
 }
 
+// `W = F d = \tfrac12 m v^2` with d new in the first link: nothing but that link relates d, and
+// the second link may be the law that fixes it (work and energy), so a point that fails it is
+// no evidence. A name counts when a given of this display introduces it beside the name it sets
+// (a given that introduces one name alone determines it, and one that sets no name relates its
+// new names to each other). Not when the row's difference, the
+// display's givens put in, is a function of the name times one without it: `K = \tfrac12 m v^2
+// = q^2 B R^2/(2m)` with `R = m v/(qB)` leaves v^2 (1 - 1/B) m/2, which fixes B, not v.
+std::string Search::law_about_new_name() const {
+  std::set<std::string> mine;
+  for (const auto& side : s_.claim.sides) names_of(side, mine);
+  std::vector<std::string> loose;
+  std::vector<const Step*> givens;
+  for (const auto& st : d_.steps) {
+    if (&st == &s_) break;
+    if (!st.document_row || st.document_row->display != row_.display || st.document_row->relation == "inline" ||
+        !st.document_row->not_read.empty() || st.claim.sides.size() != 2)
+      continue;
+    const auto fresh = new_names_of(st);
+    if (fresh.empty()) continue;
+    givens.push_back(&st);
+    const std::string set = set_name(st);
+    if (fresh.size() > 1 && !set.empty())   // (a relation that sets no name, W/(2\tan\theta) = \mu W, fixes one of its new names)
+      for (const auto& n : fresh)
+        if (n != set && mine.count(n)) loose.push_back(n);
+  }
+  if (loose.empty()) return "";
+  try {
+    GiNaC::ex diff = to_ginac(s_.claim.sides.front(), d_.symbols) - to_ginac(s_.claim.sides.back(), d_.symbols);
+    for (const Step* g : givens)
+      if (g->claim.sides[0].kind == NodeKind::Symbol)
+        diff = diff.subs(to_ginac(g->claim.sides[0], d_.symbols) == to_ginac(g->claim.sides[1], d_.symbols),
+                         GiNaC::subs_options::no_pattern);
+    for (const auto& n : loose) {
+      Node name;
+      name.kind = NodeKind::Symbol;
+      name.text = n;
+      const GiNaC::ex x = to_ginac(name, d_.symbols);
+      if (!diff.has(x)) continue;
+      const GiNaC::symbol a("law_a"), b("law_b");
+      const GiNaC::ex ratio = GiNaC::normal(diff.subs(x == a, GiNaC::subs_options::no_pattern) /
+                                            diff.subs(x == b, GiNaC::subs_options::no_pattern));
+      bool separable = true;
+      for (GiNaC::const_preorder_iterator it = ratio.preorder_begin(); it != ratio.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(a) && !it->is_equal(b)) separable = false;
+      if (!separable)
+        return "'" + n + "' is new in this display and nothing but its first relation relates it, so the row may be "
+               "the law that fixes it";
+    }
+  } catch (const std::exception&) {
+    return "the row's difference could not be formed to see whether it fixes a name new in this display";
+  }
+  return "";
+}
+
 bool Search::calculus_of_constants() const {
   // the names that are a function of a variable somewhere in the document: v for v__of_t
   std::set<std::string> varying;
@@ -355,6 +411,7 @@ std::string Search::reading_in_doubt(const StepResult& r, const std::vector<std:
   // names its quantities and then states a law (`\Delta p = p_p + p_c = m_p v_p - m_c v_c = 0`):
   // against rows before it in the same display that introduced names (givens), the row may be
   // one more equation of the system rather than a consequence of it
+  if (std::string law = law_about_new_name(); !law.empty()) return law;
   if (const auto own = own_display_givens(refs); !own.empty() && !chain_computes(refs))
     return "the counterexample rests on " + own.front() + ", a given of this same display, so the row may be one "
            "more law of the system it lists";

@@ -425,3 +425,21 @@ TEST_CASE("document search: a link solved for the name the row's first link intr
   CHECK(at(check(head + "$$ \\tfrac12 m v^2 = \\frac{G M m}{R} , \\qquad v = \\sqrt{\\frac{2 G M}{R}} $$\n"), 7, 2)
             .verdict != "refuted");
 }
+
+// `W = F d = \tfrac12 m v^2`: d is new in the first link and nothing else relates it, so the
+// second link may be the law that fixes it (work and energy); it was refuted with d chosen
+// freely. A name a given introduces alone is determined by it, and a row whose difference
+// fixes another name (the cyclotron's slip above fixes B) is still refuted.
+TEST_CASE("document search: a law about a name its own display introduces is not refuted") {
+  const auto rows = check("The block of mass $m$ starts from rest and accelerates uniformly,\n"
+                          "\n"
+                          "$$v = a t, \\qquad p = m v$$\n"                 // 3
+                          "\n"
+                          "$$F = m a$$\n"                                   // 5
+                          "\n"
+                          "The work done on it is\n"
+                          "\n"
+                          "$$W = F d = \\tfrac12 m v^2$$\n");               // 9
+  CHECK(at(rows, 9, 2).verdict == "undecided");
+  CHECK(at(rows, 9, 2).reason.find("'d' is new in this display") != std::string::npos);
+}
