@@ -322,6 +322,9 @@ bool Search::chain_computes(const std::vector<std::string>& refs) const {
 // display's givens put in, is a function of the name times one without it: `K = \tfrac12 m v^2
 // = q^2 B R^2/(2m)` with `R = m v/(qB)` leaves v^2 (1 - 1/B) m/2, which fixes B, not v.
 std::string Search::law_about_new_name() const {
+  if (law_) return *law_;
+  law_ = std::string();
+  std::string& out = *law_;
   std::set<std::string> mine;
   for (const auto& side : s_.claim.sides) names_of(side, mine);
   std::vector<std::string> loose;
@@ -359,13 +362,13 @@ std::string Search::law_about_new_name() const {
       for (GiNaC::const_preorder_iterator it = ratio.preorder_begin(); it != ratio.preorder_end(); ++it)
         if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(a) && !it->is_equal(b)) separable = false;
       if (!separable)
-        return "'" + n + "' is new in this display and nothing but its first relation relates it, so the row may be "
-               "the law that fixes it";
+        return out = "'" + n + "' is new in this display and nothing but its first relation relates it, so the row "
+                     "may be the law that fixes it";
     }
   } catch (const std::exception&) {
-    return "the row's difference could not be formed to see whether it fixes a name new in this display";
+    out = "the row's difference could not be formed to see whether it fixes a name new in this display";
   }
-  return "";
+  return out;
 }
 
 bool Search::calculus_of_constants() const {

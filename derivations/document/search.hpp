@@ -200,7 +200,8 @@ class Search {
   std::string reading_in_doubt(const StepResult& r, const std::vector<std::string>& refs) const;
   std::vector<std::string> own_display_givens(const std::vector<std::string>& refs) const;
   bool chain_computes(const std::vector<std::string>& refs) const;
-  std::string law_about_new_name() const;
+  std::string law_about_new_name() const;   // (the same for every refutation: computed once)
+  mutable std::optional<std::string> law_;
   std::vector<std::pair<std::string, std::string>> equations_for_applied(const std::vector<std::string>& refs) const;
 
   const Derivation& d_;

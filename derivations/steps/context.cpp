@@ -362,7 +362,7 @@ void add_path_differentials(const StepContext& c, const std::vector<ex>& claim, 
       if (dz.is_zero() || !ex(spoken).has(dz)) {
         auto [it, fresh] = unknown_change.emplace(z, ex());
         // (named apart from d(z): a counterexample that needs it cannot be read back as a point)
-        if (fresh) it->second = GiNaC::realsymbol("\u03b4" + c.text(z));
+        if (fresh) it->second = GiNaC::realsymbol(std::string(kUnknownChange) + c.text(z));
         dz = it->second;
       }
       total += q.e.diff(GiNaC::ex_to<GiNaC::symbol>(z)) * dz;

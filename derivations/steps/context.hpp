@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -145,6 +146,8 @@ ThroughT names_through(const StepContext& c, const ex& t);
 // differential the file never writes gets an unknown change of its own, so nothing is assumed
 // constant.
 void add_path_differentials(const StepContext& c, const std::vector<ex>& claim, std::vector<Eq>& eqs);
+// The prefix of such an unknown change's name: δz for z (counterexample.cpp reads it back).
+inline constexpr std::string_view kUnknownChange = "\u03b4";
 
 // A step's claim as checked: the corrected form when the step declares an erratum.
 const Relation& claim_of(const Step& st);

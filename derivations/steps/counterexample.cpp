@@ -165,9 +165,11 @@ bool point_values(const StepContext& c, const Verdict& v, GiNaC::exmap& out) {
 Gap counterexample_gap(StepContext& c, const Reduction& red, const std::vector<Eq>& eqs, const Verdict& v) {
   GiNaC::exmap P;
   for (const auto& [name, value] : v.point)   // an unknown change δg (add_path_differentials)
-    if (name.rfind("\u03b4", 0) == 0)
-      return {"the counterexample needs " + name.substr(2) + " to change along the path, which no cited step "
-              "says; if " + name.substr(2) + " is constant, cite a step d(" + name.substr(2) + ") = 0"};
+    if (name.rfind(kUnknownChange, 0) == 0) {
+      const std::string g = name.substr(kUnknownChange.size());
+      return {"the counterexample needs " + g + " to change along the path, which no cited step says; if " + g +
+              " is constant, cite a step d(" + g + ") = 0"};
+    }
   if (!point_values(c, v, P)) return {"the counterexample cannot be checked against the references"};
   std::vector<const Leftover*> constraining;   // leftovers that are not identities
   std::vector<ex> involved;                    // what the checks evaluate

@@ -240,12 +240,11 @@ static std::string pinned_product(StepContext& c, const Reduction& red, const ex
 // follows() on the equations as given (instantiated: false) or with their instances at the
 // claim's points and their derivatives (true).
 static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>& eqs0,
-                            const std::vector<ex>& preferred, bool instantiated, bool* pinned, bool* gap = nullptr) {
+                            const std::vector<ex>& preferred, bool instantiated, bool* pinned, bool* gap_out = nullptr) {
   std::vector<Eq> eqs = instantiated ? instantiate(c, eqs0, a - b) : eqs0;
   Bans bans;
   Reduction red;
   Verdict v;
-  bool* gap_stop = gap;
   for (int attempt = 0;; ++attempt) {
     red = reduce(c, eqs, a - b, preferred, false, bans);
     reject_contradictions(c, red, eqs);
@@ -287,7 +286,7 @@ static Verdict follows_from(StepContext& c, const ex& a, const ex& b, const std:
     Verdict u = undecided(v.method, "the difference does not vanish" + after + ", but " + gap.why);
     u.residual = c.text(ra - rb);
     v = u;
-    if (gap_stop) *gap_stop = true;
+    if (gap_out) *gap_out = true;   // (the point fails a reference: follows() may reorder)
     break;
   }
   if (red.degenerate && v.holds())
@@ -323,8 +322,8 @@ Verdict follows(StepContext& c, const ex& a, const ex& b, const std::vector<Eq>&
   if (gap && !pinned && eqs0.size() > 1 && c.opt.reorder_references) {
     std::vector<Eq> rotated(eqs0.begin() + 1, eqs0.end());
     rotated.push_back(eqs0.front());
-    bool again = false, gap2 = false;
-    Verdict w = follows_from(c, a, b, rotated, preferred, true, &again, &gap2);
+    bool again = false;
+    Verdict w = follows_from(c, a, b, rotated, preferred, true, &again);
     if (!again && (w.holds() || w.kind == VerdictKind::Refuted)) return w;
   }
   // the instances may be what pins (m_r = m_r(t) and its derivative in t give m_r' = 0): the

@@ -395,7 +395,7 @@ TexRow parse_tex_row(std::string_view text, const SourcePos& origin, const TexCo
         row.tag = s;
         std::size_t cut = quad ? open - 1 : open;
         toks.erase(toks.begin() + static_cast<long>(cut), toks.end() - 1);
-        // the sentence's stop before the tag (`= n R T \lnrac{V_2}{V_1} . \qquad (2)`)
+        // the sentence's stop before the tag (`= n R T \ln\frac{V_2}{V_1} . \qquad (2)`)
         while (toks.size() > 1) {
           const Token& t = toks[toks.size() - 2];
           if (!(t.is('.') || t.is(',') || t.is(';') || t.is_cs("quad"))) break;
